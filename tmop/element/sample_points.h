@@ -1,0 +1,39 @@
+// tmop/element/sample_points.h
+// Sample-point rules: where in each reference element the metric is evaluated.
+// Defaults (DESIGN.md section 4): linear simplices one point (A is constant there);
+// quad/hex/wedge their corners; pyramid its base corners; quadratic types corners + mid-edge
+// nodes (+ the face/centre nodes quad9/hex27 have). Weights of one rule sum to 1, so a cell's
+// contribution is the average of its metric over its points.
+#ifndef TMOP_ELEMENT_SAMPLE_POINTS_H_
+#define TMOP_ELEMENT_SAMPLE_POINTS_H_
+
+#include <string>
+#include <vector>
+
+#include "tmop/element/cell_type.h"
+
+namespace tmop {
+
+enum class SampleRule {
+  kDefault,   // per type, as above
+  kCorners,   // the corner nodes (pyramid: base corners)
+  kNodes,     // every node of the cell
+  kCentroid,  // one point at the reference centroid
+  kGauss,     // a Gauss rule exact for degree 2 (pyramid: a degree-2 rule on its collapsed cube)
+};
+
+struct SamplePoint {
+  double xi[3];
+  double weight;
+};
+
+// The rule's points for one cell type. The returned reference stays valid for the program's life.
+const std::vector<SamplePoint>& sample_points(CellType type, SampleRule rule);
+
+// "default", "corners", "nodes", "centroid", "gauss"; false when unknown.
+bool sample_rule_from_name(const std::string& name, SampleRule* rule);
+const char* sample_rule_name(SampleRule rule);
+
+}  // namespace tmop
+
+#endif  // TMOP_ELEMENT_SAMPLE_POINTS_H_

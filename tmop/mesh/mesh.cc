@@ -1,0 +1,61 @@
+#include "tmop/mesh/mesh.h"
+
+#include <algorithm>
+
+namespace tmop {
+
+int Mesh::add_vertex(const double* x) {
+  coords.insert(coords.end(), x, x + space_dim);
+  return num_vertices() - 1;
+}
+
+int Mesh::add_cell(CellType type, const std::int32_t* nodes, int region, int entity) {
+  const int n = cell_num_nodes(type);
+  cell_types.push_back(type);
+  cell_nodes.insert(cell_nodes.end(), nodes, nodes + n);
+  cell_offsets.push_back(static_cast<std::int64_t>(cell_nodes.size()));
+  cell_region.push_back(region);
+  cell_entity.push_back(entity);
+  return num_cells() - 1;
+}
+
+int Mesh::dim() const {
+  int d = 0;
+  bool seen[kNumCellTypes] = {};
+  for (CellType t : cell_types) seen[static_cast<int>(t)] = true;
+  for (int i = 0; i < kNumCellTypes; ++i)
+    if (seen[i]) d = std::max(d, cell_dim(static_cast<CellType>(i)));
+  return d;
+}
+
+std::vector<int> Mesh::count_by_type() const {
+  std::vector<int> count(kNumCellTypes, 0);
+  for (CellType t : cell_types) ++count[static_cast<int>(t)];
+  return count;
+}
+
+void Mesh::clear() { *this = Mesh(); }
+
+void Mesh::remove_lower_dimensional_cells() {
+  const int d = dim();
+  Mesh out;
+  out.space_dim = space_dim;
+  out.coords = std::move(coords);
+  out.point_data = std::move(point_data);
+  std::vector<bool> keep(num_cells());
+  for (int c = 0; c < num_cells(); ++c) {
+    keep[c] = cell_dim(cell_types[c]) == d;
+    if (keep[c]) out.add_cell(cell_types[c], cell(c), cell_region[c], cell_entity[c]);
+  }
+  for (DataArray& a : cell_data) {
+    DataArray b{a.name, a.components, {}};
+    for (int c = 0; c < num_cells(); ++c)
+      if (keep[c])
+        b.values.insert(b.values.end(), a.values.begin() + std::size_t(c) * a.components,
+                        a.values.begin() + std::size_t(c + 1) * a.components);
+    out.cell_data.push_back(std::move(b));
+  }
+  *this = std::move(out);
+}
+
+}  // namespace tmop
