@@ -1,9 +1,13 @@
 // tmop/element/sample_points.h
 // Sample-point rules: where in each reference element the metric is evaluated.
-// Defaults (DESIGN.md section 4): linear simplices one point (A is constant there);
-// quad/hex/wedge their corners; pyramid its base corners; quadratic types corners + mid-edge
-// nodes (+ the face/centre nodes quad9/hex27 have). Weights of one rule sum to 1, so a cell's
-// contribution is the average of its metric over its points.
+// Defaults (DESIGN.md section 4): vertex/line2/tri3/tet4 one point at the centroid (A is constant
+// there); quad4/hex8/wedge6 their corners; pyramid5 its base corners; quadratic types every node
+// (corners + mid-edge nodes + the face/centre nodes quad9/hex27 have).
+// The pyramid's apex is never a sample point: its rational basis has no gradient there.
+// Gauss rules: line 2 points, tri 3 (Strang-Fix), quad 2x2, tet 4 (Keast), hex 2x2x2,
+// wedge 3x2, pyramid 2x2x3 on the collapsed cube; quadratic types use their corners' rule.
+// Weights of one rule sum to 1, so a cell's contribution is the average of its metric over its
+// points (Gauss weights are the quadrature weights divided by the reference volume).
 #ifndef TMOP_ELEMENT_SAMPLE_POINTS_H_
 #define TMOP_ELEMENT_SAMPLE_POINTS_H_
 
