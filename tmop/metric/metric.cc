@@ -7,9 +7,11 @@
 #include <functional>
 
 #include "tmop/metric/shape_2d.h"
+#include "tmop/metric/shape_3d.h"
 #include "tmop/metric/size.h"
 #include "tmop/metric/size_shape.h"
 #include "tmop/metric/size_shape_orientation.h"
+#include "tmop/metric/untangle.h"
 
 namespace tmop {
 
@@ -44,6 +46,16 @@ const std::vector<Entry>& registry() {
       if (d == 2) {
         e->push_back({"shape", 2, [] { return make_shape_2d_metric(false); }});
         e->push_back({"shape_barrier", 2, [] { return make_shape_2d_metric(true); }});
+      } else {
+        e->push_back({"shape", 3, [] { return make_shape_3d_metric(Shape3dForm::kNonBarrier); }});
+        e->push_back(
+            {"shape_barrier", 3, [] { return make_shape_3d_metric(Shape3dForm::kBarrier); }});
+        e->push_back({"shape_cubic_barrier", 3,
+                      [] { return make_shape_3d_metric(Shape3dForm::kCubicBarrier); }});
+        e->push_back({"condition_barrier", 3,
+                      [] { return make_shape_3d_metric(Shape3dForm::kConditionBarrier); }});
+        e->push_back({"condition_squared_barrier", 3,
+                      [] { return make_shape_3d_metric(Shape3dForm::kConditionSquaredBarrier); }});
       }
       e->push_back({"size", d, [d] { return make_size_metric(SizeForm::kQuadratic, d); }});
       e->push_back({"size_barrier", d, [d] { return make_size_metric(SizeForm::kBarrier, d); }});
@@ -55,6 +67,7 @@ const std::vector<Entry>& registry() {
                     [d] { return make_size_shape_orientation_metric(false, d); }});
       e->push_back({"size_shape_orientation_barrier", d,
                     [d] { return make_size_shape_orientation_metric(true, d); }});
+      e->push_back({"untangle", d, [d] { return std::make_unique<UntangleMetric>(d); }});
     }
     return e;
   }();

@@ -1,0 +1,140 @@
+// tmop/metric/shape_3d.cc
+// 3D shape metrics: polar residual form for the barrier ones, cofactor form for mu_360
+// (see shape_3d.h for the derivations).
+#include "tmop/metric/shape_3d.h"
+
+#include <cmath>
+#include <limits>
+
+#include "tmop/metric/metric_base.h"
+#include "tmop/metric/small_matrix.h"
+
+namespace tmop {
+namespace {
+
+constexpr double kSqrt3 = 1.73205080756887729353;
+
+double nan_or_inf(double tau) {
+  return std::isnan(tau) ? tau : std::numeric_limits<double>::infinity();
+}
+
+class PolarShapeMetric final : public FixedMetric {
+ public:
+  PolarShapeMetric(Shape3dForm form, const char* name, const char* alias, double c2)
+      : FixedMetric(name, alias, 3, MetricClass::kShape, true, 9), form_(form), c_(std::sqrt(c2)) {}
+
+  double value(const double* T) const override {
+    double C[9];
+    small_matrix::cofactor<3>(T, C);
+    const double tau = small_matrix::det_from_cofactor<3>(T, C);
+    if (!(tau > 0.0)) return nan_or_inf(tau);
+    const double f2 = small_matrix::frobenius2<3>(T);
+    switch (form_) {
+      case Shape3dForm::kBarrier: {
+        const double t13 = std::cbrt(tau);
+        return f2 / (3.0 * t13 * t13) - 1.0;
+      }
+      case Shape3dForm::kCubicBarrier:
+        return f2 * std::sqrt(f2) / (3.0 * kSqrt3 * tau) - 1.0;
+      case Shape3dForm::kConditionBarrier:  // |T^-1| = |cof T| / tau
+        return std::sqrt(f2 * small_matrix::frobenius2<3>(C)) / (3.0 * tau) - 1.0;
+      case Shape3dForm::kConditionSquaredBarrier:
+        return f2 * small_matrix::frobenius2<3>(C) / (9.0 * tau * tau) - 1.0;
+      default:
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+
+  bool residuals(const double* T, double* r, double* dr_dT) const override {
+    double C[9];
+    small_matrix::cofactor<3>(T, C);
+    const double tau = small_matrix::det_from_cofactor<3>(T, C);
+    if (!(tau > 0.0) || !std::isfinite(tau)) return false;
+    double R[9];
+    if (!small_matrix::polar_rotation_3(T, R)) return false;
+    const double a = 1.0 / std::cbrt(tau);  // S = a T
+    const double ca = c_ * a;
+    for (int n = 0; n < 9; ++n) {
+      r[n] = ca * T[n] - c_ * R[n];
+      if (!std::isfinite(r[n])) return false;
+    }
+    if (dr_dT != nullptr) {
+      // c a (I - vec(T) vec(T^-t)^t / 3), T^-t = C / tau.
+      const double b = -ca / (3.0 * tau);
+      for (int n = 0; n < 9; ++n) {
+        double* row = dr_dT + 9 * n;
+        const double bt = b * T[n];
+        for (int m = 0; m < 9; ++m) row[m] = bt * C[m];
+        row[n] += ca;
+      }
+    }
+    return true;
+  }
+
+ private:
+  Shape3dForm form_;
+  double c_;
+};
+
+class ConformalShapeMetric final : public FixedMetric {
+ public:
+  ConformalShapeMetric() : FixedMetric("shape_3d", "mu_360", 3, MetricClass::kShape, false, 9) {}
+
+  double value(const double* T) const override {
+    const double f2 = small_matrix::frobenius2<3>(T);
+    return f2 * std::sqrt(f2) / (3.0 * kSqrt3) - small_matrix::det<3>(T);
+  }
+
+  bool residuals(const double* T, double* r, double* dr_dT) const override {
+    const double f2 = small_matrix::frobenius2<3>(T);
+    if (!std::isfinite(f2)) return false;
+    const double n = std::sqrt(f2 / 3.0);
+    if (!(n > 1e-150)) {  // T = 0 (a minimiser): r -> 0 and dr/dT -> 0 like |T|^(3/2), |T|^(1/2)
+      for (int m = 0; m < 9; ++m) r[m] = 0.0;
+      if (dr_dT != nullptr) {
+        for (int m = 0; m < 81; ++m) dr_dT[m] = 0.0;
+      }
+      return true;
+    }
+    double C[9];
+    small_matrix::cofactor<3>(T, C);
+    const double sn = std::sqrt(n);
+    const double u = 0.5 / sn;  // r = u cof - v T
+    const double v = 0.5 * sn;
+    for (int m = 0; m < 9; ++m) r[m] = u * C[m] - v * T[m];
+    if (dr_dT != nullptr) {
+      // dr = u dcof - v I - cof (x) T / (12 n^(5/2)) - T (x) T / (12 n^(3/2)).
+      small_matrix::cofactor_derivative_3(T, dr_dT);
+      const double p = 1.0 / (12.0 * n * n * sn);
+      const double q = n * p;
+      for (int i = 0; i < 9; ++i) {
+        double* row = dr_dT + 9 * i;
+        const double ai = -(p * C[i] + q * T[i]);
+        for (int m = 0; m < 9; ++m) row[m] = u * row[m] + ai * T[m];
+        row[i] -= v;
+      }
+    }
+    return true;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Metric> make_shape_3d_metric(Shape3dForm form) {
+  switch (form) {
+    case Shape3dForm::kNonBarrier:
+      return std::make_unique<ConformalShapeMetric>();
+    case Shape3dForm::kBarrier:
+      return std::make_unique<PolarShapeMetric>(form, "shape_barrier_3d", "mu_303", 2.0 / 3.0);
+    case Shape3dForm::kCubicBarrier:
+      return std::make_unique<PolarShapeMetric>(form, "shape_cubic_barrier_3d", "mu_304", 1.0);
+    case Shape3dForm::kConditionBarrier:
+      return std::make_unique<PolarShapeMetric>(form, "condition_barrier_3d", "mu_301", 2.0 / 3.0);
+    case Shape3dForm::kConditionSquaredBarrier:
+      return std::make_unique<PolarShapeMetric>(form, "condition_squared_barrier_3d", "mu_302",
+                                                4.0 / 3.0);
+  }
+  return nullptr;
+}
+
+}  // namespace tmop

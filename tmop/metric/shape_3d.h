@@ -1,0 +1,58 @@
+// tmop/metric/shape_3d.h
+// 3D shape metrics: invariant to rotations (left and right) and scaling of T, minimal exactly on
+// T = s R (s > 0, R a rotation). value() reports the published formula; the residuals are an
+// equivalent least-squares form (3D shape metrics have no polynomial sum of squares).
+//
+// Barrier metrics (tau = det T > 0 required), in terms of S = T tau^(-1/3) (det S = 1):
+//   shape_barrier_3d              mu_303  |T|^2 / (3 tau^(2/3)) - 1         c^2 = 2/3
+//   shape_cubic_barrier_3d        mu_304  |T|^3 / (3 sqrt(3) tau) - 1       c^2 = 1
+//   condition_barrier_3d          mu_301  |T| |T^-1| / 3 - 1                c^2 = 2/3
+//   condition_squared_barrier_3d  mu_302  |T|^2 |T^-1|^2 / 9 - 1            c^2 = 4/3
+// (mu_304 is the mean-ratio-like "sliver" metric: (mean ratio)^(-3/2) - 1 for a tet.)
+//
+// Polar residual form: r = c vec(S - R), R the rotation of the polar decomposition S = R P.
+//   * Same minimisers: |S - R|^2 = |P - I|^2 = sum_i (l_i - 1)^2 over the eigenvalues l_i of P,
+//     zero iff P = I iff T = s R; each mu above is zero iff all l_i are equal (AM-GM / Cauchy-
+//     Schwarz), i.e. on the same set.
+//   * Same invariances: scaling T changes neither S nor R; rotating T rotates S - R.
+//   * Second-order agreement: with l_i = 1 + d_i and prod l_i = 1, sum d_i = |d|^2/2 + O(d^3),
+//     so |S|^2 = |S^-1|^2 = 3 + 2|d|^2 + O(d^3); hence mu_303 ~ mu_301 ~ (2/3)|d|^2,
+//     mu_304 ~ |d|^2, mu_302 ~ (4/3)|d|^2 and c^2 |S - R|^2 matches mu to second order at the
+//     minimiser (same Hessian, so the same local Gauss-Newton model).
+//   * The Jacobian holds R fixed: dr/dT = c tau^(-1/3) (I - vec(T) vec(T^-t)^t / 3). Because
+//     R minimises |S - Q|^2 over rotations Q, the variation of R does not change |r|^2 to first
+//     order (R^t (S - R) = P - I is symmetric, dR = R W with W skew), so J^t r is the exact
+//     gradient of |r|^2 / 2 as a function of T.
+//   R comes from a scaled Newton polar iteration (small_matrix.h), no SVD.
+//
+// Non-barrier metric, defined for every T (inverted ones included):
+//   shape_3d  mu_360  |T|^3 / (3 sqrt(3)) - tau  ( = tau mu_304 for tau > 0 ),
+//   zero iff T = s R with s >= 0 (AM-GM on the singular values; a reflection gives tau < 0).
+//   Residual (cofactor form, exact Jacobian, no polar factor):
+//     r = vec(cof T - n T) / (2 sqrt(n)),  n = |T| / sqrt(3),  cof T = tau T^-t.
+//   cof T = n T implies T^t T = (tau / n) I, so r = 0 exactly on {s R, s >= 0}, like mu_360.
+//   With T = s(I + E): cof T - n T = -2 s^2 dev(sym E) + O(E^2), so |r|^2 = s^3 |dev sym E|^2
+//   = mu_360 + O(E^3): second-order agreement on the whole minimiser set; both are homogeneous
+//   of degree 3 in T. r and dr/dT are set to 0 at T = 0 (a minimiser, where r is continuous).
+#ifndef TMOP_METRIC_SHAPE_3D_H_
+#define TMOP_METRIC_SHAPE_3D_H_
+
+#include <memory>
+
+#include "tmop/metric/metric.h"
+
+namespace tmop {
+
+enum class Shape3dForm {
+  kNonBarrier,               // shape_3d, mu_360
+  kBarrier,                  // shape_barrier_3d, mu_303
+  kCubicBarrier,             // shape_cubic_barrier_3d, mu_304
+  kConditionBarrier,         // condition_barrier_3d, mu_301
+  kConditionSquaredBarrier,  // condition_squared_barrier_3d, mu_302
+};
+
+std::unique_ptr<Metric> make_shape_3d_metric(Shape3dForm form);
+
+}  // namespace tmop
+
+#endif  // TMOP_METRIC_SHAPE_3D_H_
