@@ -1,0 +1,47 @@
+// tmop/io/formats.h
+// The per-format readers and writers behind read_mesh / write_mesh (internal to io/).
+// Readers get the whole file in memory, throw tmop::Error with a located one-line message, and
+// fill a Mesh with space_dim = 3 (finish_read() then decides 2 or 3). Writers append the complete
+// file to *out (mesh_io.cc writes it atomically) or throw Error("cannot write ...").
+#ifndef TMOP_IO_FORMATS_H_
+#define TMOP_IO_FORMATS_H_
+
+#include <string>
+
+#include "tmop/io/mesh_io.h"
+#include "tmop/mesh/mesh.h"
+
+namespace tmop {
+namespace io {
+
+void read_msh(const std::string& path, const std::string& data, Mesh* mesh);
+void write_msh(const Mesh& mesh, const WriteOptions& options, std::string* out);
+
+void read_vtk(const std::string& path, const std::string& data, Mesh* mesh);
+void write_vtk(const Mesh& mesh, const WriteOptions& options, std::string* out);
+
+void read_vtu(const std::string& path, const std::string& data, Mesh* mesh);
+void write_vtu(const Mesh& mesh, const WriteOptions& options, std::string* out);
+
+void read_medit(const std::string& path, const std::string& data, Mesh* mesh);
+void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out);
+
+// OpenMesh reads and writes files itself: these take paths (write goes to a temporary path whose
+// extension selects the format).
+void read_openmesh(const std::string& path, Mesh* mesh);
+void write_openmesh(const std::string& path, const std::string& ext, const Mesh& mesh,
+                    const WriteOptions& options);
+
+// After a reader: sets space_dim to 2 when every z is exactly 0 and no cell is 3D (dropping the
+// z column), makes cell_region / cell_entity as long as the cell list.
+void finish_read(Mesh* mesh);
+
+// Coordinate k (0..2) of vertex v, 0 beyond space_dim: writers pad 2D meshes with z = 0.
+inline double coord(const Mesh& mesh, int v, int k) {
+  return k < mesh.space_dim ? mesh.coords[static_cast<std::size_t>(v) * mesh.space_dim + k] : 0.0;
+}
+
+}  // namespace io
+}  // namespace tmop
+
+#endif  // TMOP_IO_FORMATS_H_

@@ -1,0 +1,165 @@
+// tmop/io/mesh_io.cc
+// Dispatch by extension, the common post-read step and atomic writes.
+#include "tmop/io/mesh_io.h"
+
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+
+#include "tmop/io/formats.h"
+#include "tmop/io/scanner.h"
+
+namespace tmop {
+namespace {
+
+std::string extension(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+bool is_openmesh_ext(const std::string& ext) {
+  return ext == "obj" || ext == "off" || ext == "ply" || ext == "stl";
+}
+
+const char* kKnown = "known: .msh .vtk .vtu .mesh .obj .off .ply .stl";
+
+// A temporary file next to `path` (same directory, so rename() is atomic), keeping the
+// extension as the suffix because OpenMesh picks its writer by extension.
+std::string make_temp(const std::string& path, const std::string& ext, int* fd) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash);
+  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::string suffix = "." + ext;
+  std::string tmpl = dir + "/." + base + ".tmp-XXXXXX" + suffix;
+  *fd = mkstemps(&tmpl[0], static_cast<int>(suffix.size()));
+  if (*fd < 0) throw Error(path + ": cannot create a temporary file in " + dir);
+  return tmpl;
+}
+
+void write_atomically(const std::string& path, const std::string& ext, const std::string& bytes) {
+  int fd = -1;
+  const std::string tmp = make_temp(path, ext, &fd);
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n <= 0) {
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      throw Error(path + ": write error (disk full?)");
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    ::unlink(tmp.c_str());
+    throw Error(path + ": cannot write (rename of the temporary file failed)");
+  }
+}
+
+}  // namespace
+
+namespace io {
+
+void finish_read(Mesh* mesh) {
+  mesh->cell_region.resize(mesh->cell_types.size(), 0);
+  mesh->cell_entity.resize(mesh->cell_types.size(), 0);
+  if (mesh->space_dim != 3) return;
+  bool flat = true;
+  for (CellType t : mesh->cell_types)
+    if (cell_dim(t) > 2) flat = false;
+  const std::size_t n = mesh->coords.size() / 3;
+  for (std::size_t v = 0; v < n && flat; ++v)
+    if (mesh->coords[3 * v + 2] != 0.0) flat = false;
+  if (!flat) return;
+  for (std::size_t v = 0; v < n; ++v) {
+    mesh->coords[2 * v] = mesh->coords[3 * v];
+    mesh->coords[2 * v + 1] = mesh->coords[3 * v + 1];
+  }
+  mesh->coords.resize(2 * n);
+  mesh->space_dim = 2;
+}
+
+}  // namespace io
+
+Status read_mesh(const std::string& path, Mesh* mesh) {
+  mesh->clear();
+  const std::string ext = extension(path);
+  try {
+    if (is_openmesh_ext(ext)) {
+      io::read_openmesh(path, mesh);
+    } else {
+      if (ext != "msh" && ext != "vtk" && ext != "vtu" && ext != "mesh")
+        return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
+                               ")");
+      const std::string data = io::read_file(path);
+      if (ext == "msh") io::read_msh(path, data, mesh);
+      if (ext == "vtk") io::read_vtk(path, data, mesh);
+      if (ext == "vtu") io::read_vtu(path, data, mesh);
+      if (ext == "mesh") io::read_medit(path, data, mesh);
+    }
+    io::finish_read(mesh);
+  } catch (const Error& e) {
+    mesh->clear();
+    return Status::Failure(e.what());
+  } catch (const std::bad_alloc&) {
+    mesh->clear();
+    return Status::Failure(path + ": out of memory while reading");
+  }
+  return Status::Ok();
+}
+
+Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions& options) {
+  const std::string ext = extension(path);
+  try {
+    if (mesh.space_dim != 2 && mesh.space_dim != 3)
+      return Status::Failure(path + ": cannot write a mesh with space_dim " +
+                             std::to_string(mesh.space_dim));
+    if (is_openmesh_ext(ext)) {
+      int fd = -1;
+      const std::string tmp = make_temp(path, ext, &fd);
+      ::close(fd);
+      try {
+        io::write_openmesh(tmp, ext, mesh, options);
+      } catch (const Error& e) {
+        ::unlink(tmp.c_str());
+        throw Error(path + ": " + e.what());
+      }
+      if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        ::unlink(tmp.c_str());
+        return Status::Failure(path + ": cannot write (rename of the temporary file failed)");
+      }
+      return Status::Ok();
+    }
+    std::string bytes;
+    try {
+      if (ext == "msh")
+        io::write_msh(mesh, options, &bytes);
+      else if (ext == "vtk")
+        io::write_vtk(mesh, options, &bytes);
+      else if (ext == "vtu")
+        io::write_vtu(mesh, options, &bytes);
+      else if (ext == "mesh")
+        io::write_medit(mesh, options, &bytes);
+      else
+        return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
+                               ")");
+    } catch (const Error& e) {
+      throw Error(path + ": " + e.what());
+    }
+    write_atomically(path, ext, bytes);
+  } catch (const Error& e) {
+    return Status::Failure(e.what());
+  } catch (const std::bad_alloc&) {
+    return Status::Failure(path + ": out of memory while writing");
+  }
+  return Status::Ok();
+}
+
+}  // namespace tmop

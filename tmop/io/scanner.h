@@ -1,0 +1,85 @@
+// tmop/io/scanner.h
+// Scanner: a cursor over a whole file held in memory, shared by every reader. It reads
+// whitespace-separated tokens (integers via std::from_chars, doubles via std::from_chars, which
+// is exact and locale-independent) and raw binary values, and turns every problem into a
+// tmop::Error whose message is "FILE:LINE: what" (text) or "FILE:byte N: what" (binary). Line
+// numbers are computed only when an error is raised, so scanning costs nothing extra.
+//
+// check_count() is the guard against huge declared counts: a count is accepted only when
+// count * min_bytes_each fits in the rest of the file, so no reader allocates more than a small
+// multiple of the file size.
+#ifndef TMOP_IO_SCANNER_H_
+#define TMOP_IO_SCANNER_H_
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+
+#include "tmop/core/status.h"
+
+namespace tmop {
+namespace io {
+
+// Reads the whole file; throws Error("FILE: cannot open ...") on failure.
+std::string read_file(const std::string& path);
+
+class Scanner {
+ public:
+  Scanner(const std::string& path, std::string_view data) : path_(path), data_(data) {}
+
+  const std::string& path() const { return path_; }
+  std::string_view data() const { return data_; }
+  std::size_t pos() const { return pos_; }
+  void set_pos(std::size_t p) { pos_ = p; }
+  std::size_t remaining() const { return data_.size() - pos_; }
+
+  // Text.
+  void skip_space();
+  bool at_end();                          // true when only whitespace is left
+  std::string_view token();               // next token; fails at end of file
+  bool try_token(std::string_view* out);  // false at end of file
+  std::int64_t integer(std::int64_t lo, std::int64_t hi, const char* what);
+  double real(const char* what);  // finite values only
+  std::string_view line();        // rest of the current line without "\r\n"; moves past it
+  void skip_line();               // moves past the next '\n'
+  // Moves past the next line that, trimmed, equals `text`; false (position at end) if none.
+  bool skip_to_line(std::string_view text);
+
+  // Binary (little-endian host assumed; swap=true reverses bytes, e.g. VTK's big-endian data).
+  const char* bytes(std::size_t n, const char* what);
+  template <typename T>
+  T binary(bool swap, const char* what) {
+    const char* p = bytes(sizeof(T), what);
+    char buf[sizeof(T)];
+    std::memcpy(buf, p, sizeof(T));
+    if (swap)
+      for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(buf[i], buf[sizeof(T) - 1 - i]);
+    T v;
+    std::memcpy(&v, buf, sizeof(T));
+    return v;
+  }
+
+  // Fails unless count items of at least min_bytes_each bytes fit in the rest of the file.
+  void check_count(std::uint64_t count, std::size_t min_bytes_each, const char* what) const;
+  void check_count_binary(std::uint64_t count, std::size_t bytes_each, const char* what) const;
+
+  [[noreturn]] void fail(const std::string& what) const { fail_at(pos_, what); }
+  [[noreturn]] void fail_at(std::size_t pos, const std::string& what) const;
+  [[noreturn]] void fail_byte(std::size_t pos, const std::string& what) const;
+  int line_of(std::size_t pos) const;
+
+ private:
+  std::string path_;
+  std::string_view data_;
+  std::size_t pos_ = 0;
+};
+
+inline bool is_space(char c) {
+  return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+
+}  // namespace io
+}  // namespace tmop
+
+#endif  // TMOP_IO_SCANNER_H_

@@ -1,0 +1,509 @@
+// tmop/io/vtk.cc
+// VTK legacy format, DATASET UNSTRUCTURED_GRID only, ASCII or BINARY (big-endian, as the format
+// requires). Reads both cell layouts: "CELLS n size" with [npts, ids...] rows (versions <= 4.2)
+// and "CELLS nOffsets nConn" + OFFSETS / CONNECTIVITY arrays (version 5.1, what meshio writes).
+// Attributes read: SCALARS (1-4 components, LOOKUP_TABLE line), VECTORS, NORMALS, TENSORS and
+// FIELD arrays, into Mesh::point_data / cell_data; tag arrays per vtk_common.h. Writes version
+// 3.0 with the old CELLS layout (readable by every VTK-based tool), Float64 points, tags as
+// SCALARS int arrays and fields as SCALARS / VECTORS / FIELD. Node order converted by
+// node_order.h. Array names with spaces are written with "%20", as VTK does.
+#include <cmath>
+#include <limits>
+
+#include "tmop/io/formats.h"
+#include "tmop/io/node_order.h"
+#include "tmop/io/scanner.h"
+#include "tmop/io/text_format.h"
+#include "tmop/io/vtk_common.h"
+
+namespace tmop {
+namespace io {
+namespace {
+
+constexpr std::int64_t kMaxInt32 = std::numeric_limits<std::int32_t>::max();
+
+int type_size(std::string_view t) {
+  if (t == "unsigned_char" || t == "char" || t == "bit") return 1;
+  if (t == "unsigned_short" || t == "short") return 2;
+  if (t == "unsigned_int" || t == "int" || t == "float") return 4;
+  if (t == "unsigned_long" || t == "long" || t == "double" || t == "vtktypeint64" ||
+      t == "vtktypeuint64" || t == "vtkIdType")
+    return 8;
+  return 0;
+}
+
+std::string decode_name(std::string_view n) {
+  std::string out;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    if (n[i] == '%' && i + 2 < n.size() && n[i + 1] == '2' && n[i + 2] == '0') {
+      out.push_back(' ');
+      i += 2;
+    } else {
+      out.push_back(n[i]);
+    }
+  }
+  return out;
+}
+
+std::string encode_name(const std::string& n) {
+  std::string out;
+  for (char c : n) {
+    if (c == ' ')
+      out += "%20";
+    else
+      out.push_back(c);
+  }
+  return out;
+}
+
+class VtkReader {
+ public:
+  VtkReader(const std::string& path, const std::string& data, Mesh* mesh)
+      : s_(path, data), mesh_(mesh) {}
+
+  void read() {
+    if (s_.at_end()) s_.fail("empty file");
+    s_.set_pos(0);
+    const std::string_view header = s_.line();
+    if (header.rfind("# vtk DataFile Version", 0) != 0)
+      s_.fail_at(0, "not a VTK legacy file: first line must be '# vtk DataFile Version x.y'");
+    s_.line();  // title
+    s_.skip_space();
+    const std::size_t fpos = s_.pos();
+    const std::string_view format = s_.line();
+    if (format.rfind("ASCII", 0) == 0)
+      binary_ = false;
+    else if (format.rfind("BINARY", 0) == 0)
+      binary_ = true;
+    else
+      s_.fail_at(fpos, "expected ASCII or BINARY");
+    keyword("DATASET");
+    const std::size_t dpos = s_.pos();
+    if (s_.token() != "UNSTRUCTURED_GRID")
+      s_.fail_at(dpos, "only DATASET UNSTRUCTURED_GRID is supported");
+    bool have_points = false, have_cells = false, have_types = false;
+    std::vector<std::int64_t> offsets, conn, types;
+    std::string_view t;
+    while (s_.try_token(&t)) {
+      const std::size_t p = s_.pos() - t.size();
+      if (t == "POINTS") {
+        const std::int64_t n = s_.integer(0, kMaxInt32 - 1, "number of points");
+        const std::string_view type = value_type();
+        check_count(n * 3, type);
+        std::vector<double> xyz;
+        read_reals(n * 3, type, &xyz, "point coordinate");
+        mesh_->coords = std::move(xyz);
+        have_points = true;
+      } else if (t == "CELLS") {
+        read_cells(&offsets, &conn);
+        have_cells = true;
+      } else if (t == "CELL_TYPES") {
+        const std::int64_t n = s_.integer(0, kMaxInt32 - 1, "number of cell types");
+        if (binary_) s_.skip_line();
+        check_count(n, "int");
+        read_ints(n, "int", &types, "cell type");
+        have_types = true;
+      } else if (t == "CELL_DATA" || t == "POINT_DATA") {
+        const bool cell = t == "CELL_DATA";
+        const std::int64_t n = s_.integer(0, kMaxInt32 - 1, "number of data items");
+        read_attributes(n, cell ? &mesh_->cell_data : &mesh_->point_data);
+      } else if (t == "FIELD") {  // dataset-level field data: not mesh data, skipped
+        std::vector<DataArray> ignored;
+        read_field(-1, &ignored);
+      } else if (t == "METADATA") {
+        skip_metadata();
+      } else {
+        s_.fail_at(p, "unexpected keyword '" + std::string(t.substr(0, 32)) + "'");
+      }
+    }
+    if (!have_points) s_.fail("no POINTS section");
+    if (have_cells != have_types) s_.fail("CELLS and CELL_TYPES must both be present");
+    build_cells(offsets, conn, types);
+    for (const DataArray& a : mesh_->point_data)
+      if (a.values.size() != mesh_->coords.size() / 3 * a.components)
+        s_.fail("POINT_DATA array '" + a.name + "' does not have one value per point");
+    for (const DataArray& a : mesh_->cell_data)
+      if (a.values.size() != mesh_->cell_types.size() * a.components)
+        s_.fail("CELL_DATA array '" + a.name + "' does not have one value per cell");
+    std::string bad;
+    if (!extract_tag_arrays(mesh_, &bad))
+      s_.fail("tag array '" + bad + "' must hold one integer per cell");
+  }
+
+ private:
+  void keyword(const char* k) {
+    const std::size_t p = (s_.skip_space(), s_.pos());
+    std::string_view t;
+    if (!s_.try_token(&t)) s_.fail(std::string("unexpected end of file, expected ") + k);
+    if (t != k)
+      s_.fail_at(p, std::string("expected ") + k + ", got '" + std::string(t.substr(0, 32)) + "'");
+  }
+
+  std::string_view value_type() {
+    const std::size_t p = (s_.skip_space(), s_.pos());
+    const std::string_view type = s_.token();
+    if (type_size(type) == 0)
+      s_.fail_at(p, "unknown data type '" + std::string(type.substr(0, 32)) + "'");
+    if (binary_) s_.skip_line();
+    return type;
+  }
+
+  void check_count(std::int64_t n, std::string_view type) {
+    if (binary_)
+      s_.check_count_binary(static_cast<std::uint64_t>(n), type_size(type), "value");
+    else
+      s_.check_count(static_cast<std::uint64_t>(n), 2, "value");
+  }
+
+  double binary_value(std::string_view type, const char* what) {
+    const int size = type_size(type);
+    if (type == "float") return s_.binary<float>(true, what);
+    if (type == "double") return s_.binary<double>(true, what);
+    if (type == "char") return s_.binary<std::int8_t>(true, what);
+    if (type == "unsigned_char" || type == "bit") return s_.binary<std::uint8_t>(true, what);
+    if (type == "short") return s_.binary<std::int16_t>(true, what);
+    if (type == "unsigned_short") return s_.binary<std::uint16_t>(true, what);
+    if (type == "int") return s_.binary<std::int32_t>(true, what);
+    if (type == "unsigned_int") return s_.binary<std::uint32_t>(true, what);
+    if (type == "unsigned_long" || type == "vtktypeuint64")
+      return static_cast<double>(s_.binary<std::uint64_t>(true, what));
+    (void)size;
+    return static_cast<double>(s_.binary<std::int64_t>(true, what));
+  }
+
+  void read_reals(std::int64_t n, std::string_view type, std::vector<double>* out,
+                  const char* what) {
+    out->resize(static_cast<std::size_t>(n));
+    for (std::int64_t i = 0; i < n; ++i) {
+      const std::size_t p = s_.pos();
+      const double v = binary_ ? binary_value(type, what) : s_.real(what);
+      if (!std::isfinite(v)) s_.fail_byte(p, std::string(what) + " is not finite");
+      (*out)[static_cast<std::size_t>(i)] = v;
+    }
+  }
+
+  void read_ints(std::int64_t n, std::string_view type, std::vector<std::int64_t>* out,
+                 const char* what) {
+    out->resize(static_cast<std::size_t>(n));
+    for (std::int64_t i = 0; i < n; ++i) {
+      if (binary_) {
+        const std::size_t p = s_.pos();
+        const double v = binary_value(type, what);
+        if (v != std::floor(v) || std::fabs(v) > 9e15)
+          s_.fail_byte(p, std::string(what) + " is not an integer");
+        (*out)[static_cast<std::size_t>(i)] = static_cast<std::int64_t>(v);
+      } else {
+        (*out)[static_cast<std::size_t>(i)] =
+            s_.integer(std::numeric_limits<std::int64_t>::min(),
+                       std::numeric_limits<std::int64_t>::max(), what);
+      }
+    }
+  }
+
+  void read_cells(std::vector<std::int64_t>* offsets, std::vector<std::int64_t>* conn) {
+    const std::int64_t a = s_.integer(0, kMaxInt32, "number of cells");
+    const std::int64_t b =
+        s_.integer(0, std::numeric_limits<std::int64_t>::max(), "cell list size");
+    const std::size_t save = s_.pos();
+    std::string_view t;
+    if (s_.try_token(&t) && t == "OFFSETS") {  // version 5.1 layout
+      const std::string_view otype = value_type();
+      check_count(a, otype);
+      read_ints(a, otype, offsets, "cell offset");
+      keyword("CONNECTIVITY");
+      const std::string_view ctype = value_type();
+      check_count(b, ctype);
+      read_ints(b, ctype, conn, "cell node index");
+      if (!offsets->empty() && ((*offsets)[0] != 0 || offsets->back() != b))
+        s_.fail("OFFSETS must start at 0 and end at the CONNECTIVITY size");
+      return;
+    }
+    s_.set_pos(save);
+    if (binary_) s_.skip_line();
+    check_count(b, "int");
+    std::vector<std::int64_t> flat;
+    read_ints(b, "int", &flat, "cell list entry");
+    offsets->assign(1, 0);
+    conn->clear();
+    conn->reserve(static_cast<std::size_t>(b));
+    std::size_t i = 0;
+    for (std::int64_t c = 0; c < a; ++c) {
+      if (i >= flat.size())
+        s_.fail("CELLS list is shorter than its " + std::to_string(a) + " cells");
+      const std::int64_t npts = flat[i++];
+      if (npts < 0 || static_cast<std::uint64_t>(npts) > flat.size() - i)
+        s_.fail("cell " + std::to_string(c) + " has a bad node count " + std::to_string(npts));
+      conn->insert(conn->end(), flat.begin() + static_cast<std::ptrdiff_t>(i),
+                   flat.begin() + static_cast<std::ptrdiff_t>(i + npts));
+      i += static_cast<std::size_t>(npts);
+      offsets->push_back(static_cast<std::int64_t>(conn->size()));
+    }
+    if (i != flat.size()) s_.fail("CELLS size " + std::to_string(b) + " does not match its rows");
+  }
+
+  void build_cells(const std::vector<std::int64_t>& offsets, const std::vector<std::int64_t>& conn,
+                   const std::vector<std::int64_t>& types) {
+    const std::size_t ncells = offsets.empty() ? 0 : offsets.size() - 1;
+    if (types.size() != ncells)
+      s_.fail("CELL_TYPES has " + std::to_string(types.size()) + " entries for " +
+              std::to_string(ncells) + " cells");
+    const std::int64_t nv = static_cast<std::int64_t>(mesh_->coords.size() / 3);
+    std::int32_t nodes[kMaxCellNodes];
+    mesh_->cell_types.reserve(ncells);
+    for (std::size_t c = 0; c < ncells; ++c) {
+      CellType type;
+      if (!cell_type_from_vtk(static_cast<int>(types[c]), &type))
+        s_.fail("cell " + std::to_string(c) + ": unsupported VTK cell type " +
+                std::to_string(types[c]));
+      const std::int64_t b = offsets[c], e = offsets[c + 1];
+      if (e - b != cell_num_nodes(type) || b < 0 || e > static_cast<std::int64_t>(conn.size()))
+        s_.fail("cell " + std::to_string(c) + " (" + cell_name(type) + ") has " +
+                std::to_string(e - b) + " nodes, expected " + std::to_string(cell_num_nodes(type)));
+      const int* p = gmsh_index_of_vtk_node(type);
+      for (int i = 0; i < cell_num_nodes(type); ++i) {
+        const std::int64_t v = conn[static_cast<std::size_t>(b + i)];
+        if (v < 0 || v >= nv)
+          s_.fail("cell " + std::to_string(c) + " refers to point " + std::to_string(v) +
+                  ", out of range 0.." + std::to_string(nv - 1));
+        nodes[p[i]] = static_cast<std::int32_t>(v);
+      }
+      mesh_->add_cell(type, nodes);
+    }
+  }
+
+  void add_array(std::string name, int comps, std::int64_t n, std::string_view type,
+                 std::vector<DataArray>* out) {
+    check_count(n * comps, type);
+    DataArray a;
+    a.name = std::move(name);
+    a.components = comps;
+    read_reals(n * comps, type, &a.values, "data value");
+    out->push_back(std::move(a));
+  }
+
+  // Reads attribute blocks until the next section keyword.
+  void read_attributes(std::int64_t n, std::vector<DataArray>* out) {
+    std::string_view t;
+    while (true) {
+      const std::size_t save = s_.pos();
+      if (!s_.try_token(&t)) return;
+      const std::size_t p = s_.pos() - t.size();
+      if (t == "SCALARS") {
+        const std::string name = decode_name(s_.token());
+        const std::size_t tp = (s_.skip_space(), s_.pos());
+        const std::string_view type = s_.token();
+        if (type_size(type) == 0)
+          s_.fail_at(tp, "unknown data type '" + std::string(type.substr(0, 32)) + "'");
+        // Optional component count on the same line.
+        int comps = 1;
+        const std::string_view rest = s_.line();
+        if (!rest.empty()) {
+          Scanner r(s_.path(), rest);
+          std::string_view c;
+          if (r.try_token(&c)) {
+            if (c.size() != 1 || c[0] < '1' || c[0] > '4')
+              s_.fail_at(tp, "SCALARS component count must be 1..4");
+            comps = c[0] - '0';
+          }
+        }
+        const std::size_t lp = (s_.skip_space(), s_.pos());
+        std::string_view lt;
+        if (s_.try_token(&lt) && lt == "LOOKUP_TABLE") {
+          s_.token();
+          if (binary_) s_.skip_line();
+        } else {
+          s_.set_pos(lp);
+        }
+        add_array(name, comps, n, type, out);
+      } else if (t == "VECTORS" || t == "NORMALS" || t == "TENSORS") {
+        const std::string name = decode_name(s_.token());
+        const std::string_view type = value_type();
+        add_array(name, t == "TENSORS" ? 9 : 3, n, type, out);
+      } else if (t == "FIELD") {
+        read_field(n, out);
+      } else if (t == "LOOKUP_TABLE") {
+        s_.token();
+        const std::int64_t size = s_.integer(0, kMaxInt32, "lookup table size");
+        if (binary_) s_.skip_line();
+        check_count(4 * size, binary_ ? "unsigned_char" : "float");
+        std::vector<double> ignored;
+        read_reals(4 * size, binary_ ? "unsigned_char" : "float", &ignored, "lookup table value");
+      } else if (t == "METADATA") {
+        skip_metadata();
+      } else if (t == "COLOR_SCALARS" || t == "TEXTURE_COORDINATES") {
+        s_.fail_at(p, std::string(t) + " attributes are not supported");
+      } else {
+        s_.set_pos(save);
+        return;
+      }
+    }
+  }
+
+  // n < 0: dataset-level field, any tuple counts.
+  void read_field(std::int64_t n, std::vector<DataArray>* out) {
+    s_.token();  // field name
+    const std::int64_t k = s_.integer(0, 100000, "number of field arrays");
+    for (std::int64_t i = 0; i < k; ++i) {
+      s_.skip_space();
+      const std::size_t p = s_.pos();
+      const std::string name = decode_name(s_.token());
+      const std::int64_t comps = s_.integer(1, 1000, "number of components");
+      const std::int64_t tuples = s_.integer(0, kMaxInt32, "number of tuples");
+      const std::string_view type = value_type();
+      if (n >= 0 && tuples != n)
+        s_.fail_at(p, "field array '" + name + "' has " + std::to_string(tuples) +
+                          " tuples, expected " + std::to_string(n));
+      add_array(name, static_cast<int>(comps), tuples, type, out);
+      if (n < 0) out->pop_back();
+      skip_metadata_if_present();
+    }
+  }
+
+  void skip_metadata_if_present() {
+    const std::size_t save = s_.pos();
+    std::string_view t;
+    if (s_.try_token(&t) && t == "METADATA")
+      skip_metadata();
+    else
+      s_.set_pos(save);
+  }
+
+  // METADATA blocks end at an empty line.
+  void skip_metadata() {
+    s_.skip_line();
+    while (s_.remaining() > 0) {
+      std::string_view l = s_.line();
+      bool blank = true;
+      for (char c : l) blank &= is_space(c);
+      if (blank) return;
+    }
+  }
+
+  Scanner s_;
+  Mesh* mesh_;
+  bool binary_ = false;
+};
+
+class VtkWriter {
+ public:
+  VtkWriter(const Mesh& mesh, bool binary, std::string* out)
+      : mesh_(mesh), bin_(binary), out_(out) {}
+
+  void write() {
+    const int n = mesh_.num_vertices();
+    const int m = mesh_.num_cells();
+    out_->append("# vtk DataFile Version 3.0\ntmop mesh\n");
+    out_->append(bin_ ? "BINARY\n" : "ASCII\n");
+    out_->append("DATASET UNSTRUCTURED_GRID\nPOINTS ");
+    append_int(out_, n);
+    out_->append(" double\n");
+    for (int v = 0; v < n; ++v) {
+      for (int j = 0; j < 3; ++j) real(coord(mesh_, v, j), j == 2 ? '\n' : ' ');
+    }
+    end_binary();
+    std::int64_t size = 0;
+    for (int c = 0; c < m; ++c) size += 1 + mesh_.cell_size(c);
+    out_->append("CELLS ");
+    append_int(out_, m);
+    out_->push_back(' ');
+    append_int(out_, size);
+    out_->push_back('\n');
+    for (int c = 0; c < m; ++c) {
+      const CellType t = mesh_.cell_types[c];
+      const int nn = cell_num_nodes(t);
+      const int* p = gmsh_index_of_vtk_node(t);
+      integer(nn, ' ');
+      for (int i = 0; i < nn; ++i) integer(mesh_.cell(c)[p[i]], i + 1 == nn ? '\n' : ' ');
+    }
+    end_binary();
+    out_->append("CELL_TYPES ");
+    append_int(out_, m);
+    out_->push_back('\n');
+    for (int c = 0; c < m; ++c) integer(vtk_cell_type(mesh_.cell_types[c]), '\n');
+    end_binary();
+    out_->append("CELL_DATA ");
+    append_int(out_, m);
+    out_->push_back('\n');
+    write_int_array(kRegionArray, mesh_.cell_region);
+    write_int_array(kEntityArray, mesh_.cell_entity);
+    for (const DataArray& a : mesh_.cell_data)
+      if (!is_tag_array(a.name)) write_array(a, m);
+    if (!mesh_.point_data.empty()) {
+      out_->append("POINT_DATA ");
+      append_int(out_, n);
+      out_->push_back('\n');
+      for (const DataArray& a : mesh_.point_data) write_array(a, n);
+    }
+  }
+
+ private:
+  void real(double v, char sep) {
+    if (bin_) {
+      append_binary<double>(out_, v, true);
+    } else {
+      append_double(out_, v);
+      out_->push_back(sep);
+    }
+  }
+  void integer(std::int64_t v, char sep) {
+    if (bin_) {
+      append_binary<std::int32_t>(out_, static_cast<std::int32_t>(v), true);
+    } else {
+      append_int(out_, v);
+      out_->push_back(sep);
+    }
+  }
+  void end_binary() {
+    if (bin_) out_->push_back('\n');
+  }
+
+  void write_int_array(const char* name, const std::vector<std::int32_t>& values) {
+    out_->append("SCALARS ");
+    out_->append(name);
+    out_->append(" int 1\nLOOKUP_TABLE default\n");
+    for (std::int32_t v : values) integer(v, '\n');
+    end_binary();
+  }
+
+  void write_array(const DataArray& a, int items) {
+    if (a.components < 1 || a.values.size() != static_cast<std::size_t>(items) * a.components)
+      throw Error("cannot write: data array '" + a.name + "' has " +
+                  std::to_string(a.values.size()) + " values for " + std::to_string(items) +
+                  " items");
+    const std::string name = encode_name(a.name);
+    if (a.components == 3) {
+      out_->append("VECTORS " + name + " double\n");
+    } else if (a.components <= 4) {
+      out_->append("SCALARS " + name + " double " + std::to_string(a.components) +
+                   "\nLOOKUP_TABLE default\n");
+    } else {
+      out_->append("FIELD FieldData 1\n" + name + " " + std::to_string(a.components) + " " +
+                   std::to_string(items) + " double\n");
+    }
+    for (std::size_t i = 0; i < a.values.size(); ++i)
+      real(a.values[i], (i + 1) % a.components == 0 ? '\n' : ' ');
+    end_binary();
+  }
+
+  const Mesh& mesh_;
+  bool bin_;
+  std::string* out_;
+};
+
+}  // namespace
+
+void read_vtk(const std::string& path, const std::string& data, Mesh* mesh) {
+  mesh->space_dim = 3;
+  VtkReader(path, data, mesh).read();
+}
+
+void write_vtk(const Mesh& mesh, const WriteOptions& options, std::string* out) {
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    for (int k = 0; k < mesh.cell_size(c); ++k)
+      if (mesh.cell(c)[k] < 0 || mesh.cell(c)[k] >= mesh.num_vertices())
+        throw Error("cannot write: cell " + std::to_string(c) + " refers to a missing vertex");
+  VtkWriter(mesh, options.binary, out).write();
+}
+
+}  // namespace io
+}  // namespace tmop
