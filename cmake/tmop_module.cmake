@@ -1,12 +1,13 @@
-# tmop_module(NAME DEPS dep...) makes the static library tmop_NAME from tmop/NAME/*.cc
+# tmop_module(NAME DEPS dep...) makes the static library target tmop_NAME_lib (libtmop_NAME.a) from tmop/NAME/*.cc
 # (an INTERFACE library while the folder has only headers). One library per concept folder
 # keeps the dependency direction of docs/architecture.md checkable by the linker.
 function(tmop_module name)
   cmake_parse_arguments(M "" "" "DEPS" ${ARGN})
   file(GLOB srcs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tmop/${name}/*.cc)
-  set(lib tmop_${name})
+  set(lib tmop_${name}_lib)
   if(srcs)
     add_library(${lib} STATIC ${srcs})
+    set_target_properties(${lib} PROPERTIES OUTPUT_NAME tmop_${name})
     target_include_directories(${lib} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
                                              $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
     target_link_libraries(${lib} PUBLIC ${M_DEPS} PRIVATE $<BUILD_INTERFACE:tmop_warnings>)
