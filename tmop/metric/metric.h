@@ -43,6 +43,10 @@ class Metric {
   virtual double value(const double* T) const = 0;
   // The minimum of value() (on the invariance set); |r|^2 = value - min_value for exact forms.
   virtual double min_value() const { return 0.0; }
+  // True when |r|^2 == value() - min_value() holds identically (an exact sum of squares); false
+  // for the documented equivalent forms (same minimisers and invariances, second-order agreement
+  // at the minimum), e.g. the polar form of the 3D shape metrics.
+  virtual bool exact_residuals() const { return true; }
 
   // r (m values) and, when dr_dT is not null, dr/dT as an m x (d*d) row-major matrix whose
   // column d*i + j is the derivative by T_ij. Returns false (outputs unspecified) when the metric

@@ -15,13 +15,14 @@ namespace tmop {
 class FixedMetric : public Metric {
  public:
   FixedMetric(std::string name, std::string alias, int dim, MetricClass metric_class, bool barrier,
-              int num_residuals)
+              int num_residuals, bool exact = true)
       : name_(std::move(name)),
         alias_(std::move(alias)),
         dim_(dim),
         class_(metric_class),
         barrier_(barrier),
-        num_residuals_(num_residuals) {}
+        num_residuals_(num_residuals),
+        exact_residuals_(exact) {}
 
   std::string name() const final { return name_; }
   std::string alias() const final { return alias_; }
@@ -29,6 +30,7 @@ class FixedMetric : public Metric {
   MetricClass metric_class() const final { return class_; }
   bool barrier() const final { return barrier_; }
   int num_residuals() const final { return num_residuals_; }
+  bool exact_residuals() const final { return exact_residuals_; }
 
  private:
   std::string name_;
@@ -37,6 +39,7 @@ class FixedMetric : public Metric {
   MetricClass class_;
   bool barrier_;
   int num_residuals_;
+  bool exact_residuals_;
 };
 
 }  // namespace tmop

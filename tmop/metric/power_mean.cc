@@ -29,7 +29,7 @@ PowerMeanMetric::PowerMeanMetric(std::shared_ptr<const Metric> inner, double p)
           power_name(checked(inner).name(), p),
           checked(inner).alias().empty() ? std::string() : power_name(checked(inner).alias(), p),
           checked(inner).dim(), checked(inner).metric_class(), checked(inner).barrier(),
-          checked(inner).num_residuals()),
+          checked(inner).num_residuals(), checked(inner).exact_residuals()),
       inner_(std::move(inner)),
       p_(p) {
   if (!(p >= 1.0) || !std::isfinite(p)) {

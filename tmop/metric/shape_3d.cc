@@ -21,7 +21,9 @@ double nan_or_inf(double tau) {
 class PolarShapeMetric final : public FixedMetric {
  public:
   PolarShapeMetric(Shape3dForm form, const char* name, const char* alias, double c2)
-      : FixedMetric(name, alias, 3, MetricClass::kShape, true, 9), form_(form), c_(std::sqrt(c2)) {}
+      : FixedMetric(name, alias, 3, MetricClass::kShape, true, 9, false),
+        form_(form),
+        c_(std::sqrt(c2)) {}
 
   double value(const double* T) const override {
     double C[9];
@@ -78,7 +80,8 @@ class PolarShapeMetric final : public FixedMetric {
 
 class ConformalShapeMetric final : public FixedMetric {
  public:
-  ConformalShapeMetric() : FixedMetric("shape_3d", "mu_360", 3, MetricClass::kShape, false, 9) {}
+  ConformalShapeMetric()
+      : FixedMetric("shape_3d", "mu_360", 3, MetricClass::kShape, false, 9, false) {}
 
   double value(const double* T) const override {
     const double f2 = small_matrix::frobenius2<3>(T);
