@@ -1,0 +1,173 @@
+#include "tmop/mesh/orientation.h"
+
+#include <array>
+#include <vector>
+
+#include "tmop/element/shape.h"
+
+namespace tmop {
+namespace {
+
+// Corner permutations that mirror each reference element (an odd permutation of a simplex; the
+// reversal of the base cycle for quads, hexes, wedges and pyramids).
+const int kVertexFlip[] = {0};
+const int kLineFlip[] = {1, 0};
+const int kTriFlip[] = {0, 2, 1};
+const int kQuadFlip[] = {0, 3, 2, 1};
+const int kTetFlip[] = {0, 2, 1, 3};
+const int kHexFlip[] = {0, 3, 2, 1, 4, 7, 6, 5};
+const int kWedgeFlip[] = {0, 2, 1, 3, 5, 4};
+const int kPyramidFlip[] = {0, 3, 2, 1, 4};
+
+const int* CornerFlip(CellType linear) {
+  switch (linear) {
+    case CellType::kLine2:
+      return kLineFlip;
+    case CellType::kTri3:
+      return kTriFlip;
+    case CellType::kQuad4:
+      return kQuadFlip;
+    case CellType::kTet4:
+      return kTetFlip;
+    case CellType::kHex8:
+      return kHexFlip;
+    case CellType::kWedge6:
+      return kWedgeFlip;
+    case CellType::kPyramid5:
+      return kPyramidFlip;
+    default:
+      return kVertexFlip;
+  }
+}
+
+// Full permutations derived from the corner ones and the cell table: the new mid-edge node of
+// edge (a, b) is the old node of edge (p[a], p[b]); the new face node of facet f is the old node
+// of the facet with the same corner set; anything else (quad9 / hex27 centre, line3 middle)
+// stays.
+struct Permutations {
+  std::array<std::array<int, kMaxCellNodes>, kNumCellTypes> perm{};
+  Permutations() {
+    for (int t = 0; t < kNumCellTypes; ++t) {
+      const CellInfo& info = cell_info(static_cast<CellType>(t));
+      const int* p = CornerFlip(info.linear);
+      std::array<int, kMaxCellNodes>& out = perm[t];
+      for (int i = 0; i < info.num_nodes; ++i) out[i] = i;
+      for (int i = 0; i < info.num_corners; ++i) out[i] = p[i];
+      if (info.order != 2) continue;
+      int next = info.num_corners;
+      if (info.dim >= 2) {
+        for (int e = 0; e < info.num_edges; ++e, ++next) {
+          const int a = p[info.edges[e][0]], b = p[info.edges[e][1]];
+          for (int o = 0; o < info.num_edges; ++o)
+            if ((info.edges[o][0] == a && info.edges[o][1] == b) ||
+                (info.edges[o][0] == b && info.edges[o][1] == a))
+              out[next] = info.num_corners + o;
+        }
+      }
+      if (info.dim == 3 && info.num_nodes > next) {
+        for (int f = 0; f < info.num_facets; ++f) {
+          const CellFacet& nf = info.facets[f];
+          unsigned mask = 0;
+          for (int k = 0; k < nf.num_corners; ++k) mask |= 1u << p[nf.corners[k]];
+          for (int o = 0; o < info.num_facets; ++o) {
+            unsigned omask = 0;
+            for (int k = 0; k < info.facets[o].num_corners; ++k)
+              omask |= 1u << info.facets[o].corners[k];
+            if (omask == mask) out[next + f] = next + o;
+          }
+        }
+      }
+    }
+  }
+};
+
+const Permutations& GetPermutations() {
+  static const Permutations p;
+  return p;
+}
+
+inline double Det3(const double* a, const double* b, const double* c) {
+  return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+         a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+// Classifies one element: +1 all corner dets positive, -1 all negative, 0 otherwise.
+int CellSign(const Mesh& mesh, int c) {
+  const CellType lin = cell_info(mesh.cell_type(c)).linear;
+  const CellInfo& info = cell_info(lin);
+  const int d = info.dim;
+  const std::int32_t* nodes = mesh.cell(c);
+  double X[8 * 3];
+  for (int i = 0; i < info.num_nodes; ++i)
+    for (int j = 0; j < d; ++j) X[i * d + j] = mesh.vertex(nodes[i])[j];
+  int pos = 0, neg = 0;
+  auto count = [&](double det) {
+    if (det > 0) ++pos;
+    if (det < 0) ++neg;
+  };
+  for (int i = 0; i < info.num_nodes; ++i) {
+    if (lin == CellType::kPyramid5 && i == 4) {
+      // Tets (b_k, b_k+1, b_k+2, apex): positive for a valid pyramid, like det J elsewhere.
+      for (int k = 0; k < 4; ++k) {
+        const double* b0 = X + 3 * k;
+        double u[3], v[3], w[3];
+        for (int j = 0; j < 3; ++j) {
+          u[j] = X[3 * ((k + 1) % 4) + j] - b0[j];
+          v[j] = X[3 * ((k + 2) % 4) + j] - b0[j];
+          w[j] = X[12 + j] - b0[j];
+        }
+        count(Det3(u, v, w));
+      }
+      continue;
+    }
+    double A[9];
+    cell_jacobian(lin, X, d, reference_node(lin, i), A);
+    count(d == 2 ? A[0] * A[3] - A[1] * A[2] : Det3(A, A + 3, A + 6));
+  }
+  const int checks = info.num_nodes + (lin == CellType::kPyramid5 ? 3 : 0);
+  if (pos == checks) return 1;
+  if (neg == checks) return -1;
+  return 0;
+}
+
+}  // namespace
+
+const int* reorient_permutation(CellType type) {
+  return GetPermutations().perm[static_cast<int>(type)].data();
+}
+
+OrientationReport check_orientation(const Mesh& mesh) {
+  OrientationReport r;
+  const int d = mesh.dim();
+  if (!((d == 2 && mesh.space_dim == 2) || (d == 3 && mesh.space_dim == 3))) return r;
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (cell_dim(mesh.cell_type(c)) != d) continue;
+    switch (CellSign(mesh, c)) {
+      case 1:
+        ++r.positive;
+        break;
+      case -1:
+        ++r.negative;
+        break;
+      default:
+        ++r.mixed_or_zero;
+    }
+  }
+  return r;
+}
+
+void reorient(Mesh* mesh) {
+  const int d = mesh->dim();
+  std::int32_t old[kMaxCellNodes];
+  for (int c = 0; c < mesh->num_cells(); ++c) {
+    const CellType t = mesh->cell_type(c);
+    if (cell_dim(t) != d) continue;
+    const int* p = reorient_permutation(t);
+    std::int32_t* nodes = mesh->cell(c);
+    const int n = cell_num_nodes(t);
+    for (int i = 0; i < n; ++i) old[i] = nodes[i];
+    for (int i = 0; i < n; ++i) nodes[i] = old[p[i]];
+  }
+}
+
+}  // namespace tmop

@@ -1,0 +1,199 @@
+#include "tmop/mesh/topology.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace tmop {
+namespace {
+
+// Sorts up to 4 values in place (facet keys; insertion sort beats std::sort at this size).
+inline void SortSmall(std::int32_t* v, int n) {
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && v[j] < v[j - 1]; --j) std::swap(v[j], v[j - 1]);
+}
+
+// Global corners of a facet instance, in outward order; returns their count.
+inline int FacetCorners(const Mesh& mesh, int c, int local, std::int32_t* out) {
+  const CellFacet& f = cell_info(mesh.cell_type(c)).facets[local];
+  const std::int32_t* nodes = mesh.cell(c);
+  for (int k = 0; k < f.num_corners; ++k) out[k] = nodes[f.corners[k]];
+  return f.num_corners;
+}
+
+// Local nodes lying on facet f of a type beyond its corners: the mid-edge nodes of the facet's
+// edges and, for hex27, the node in the middle of the face. Built once from the cell table.
+struct FacetNodes {
+  int count[kNumCellTypes][6] = {};
+  int nodes[kNumCellTypes][6][5] = {};
+  FacetNodes() {
+    for (int t = 0; t < kNumCellTypes; ++t) {
+      const CellInfo& info = cell_info(static_cast<CellType>(t));
+      if (info.order != 2) continue;
+      for (int f = 0; f < info.num_facets; ++f) {
+        const CellFacet& facet = info.facets[f];
+        auto on_facet = [&](int corner) {
+          for (int k = 0; k < facet.num_corners; ++k)
+            if (facet.corners[k] == corner) return true;
+          return false;
+        };
+        if (info.dim >= 2) {
+          for (int e = 0; e < info.num_edges; ++e)
+            if (on_facet(info.edges[e][0]) && on_facet(info.edges[e][1]))
+              nodes[t][f][count[t][f]++] = info.num_corners + e;
+        }
+        const int face_node = info.num_corners + info.num_edges + f;
+        if (info.dim == 3 && info.num_nodes > info.num_corners + info.num_edges + f)
+          nodes[t][f][count[t][f]++] = face_node;
+      }
+    }
+  }
+};
+
+}  // namespace
+
+std::vector<std::array<std::int32_t, 2>> mesh_edges(const Mesh& mesh) {
+  const int d = mesh.dim();
+  const int nv = mesh.num_vertices();
+  // Bucket every edge by its smaller vertex (counting sort), then sort and deduplicate the
+  // short bucket lists: O(N) apart from the tiny per-vertex sorts.
+  std::vector<std::int64_t> offsets(nv + 1, 0);
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const CellInfo& info = cell_info(mesh.cell_type(c));
+    if (info.dim != d) continue;
+    const std::int32_t* n = mesh.cell(c);
+    for (int e = 0; e < info.num_edges; ++e)
+      ++offsets[std::min(n[info.edges[e][0]], n[info.edges[e][1]]) + 1];
+  }
+  for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
+  std::vector<std::int32_t> other(offsets[nv]);
+  std::vector<std::int64_t> fill(offsets.begin(), offsets.end() - 1);
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const CellInfo& info = cell_info(mesh.cell_type(c));
+    if (info.dim != d) continue;
+    const std::int32_t* n = mesh.cell(c);
+    for (int e = 0; e < info.num_edges; ++e) {
+      const std::int32_t a = n[info.edges[e][0]], b = n[info.edges[e][1]];
+      other[fill[std::min(a, b)]++] = std::max(a, b);
+    }
+  }
+  std::vector<std::array<std::int32_t, 2>> edges;
+  edges.reserve(other.size() / 2);
+  for (int v = 0; v < nv; ++v) {
+    auto begin = other.begin() + offsets[v], end = other.begin() + offsets[v + 1];
+    std::sort(begin, end);
+    for (auto it = begin; it != end; ++it)
+      if (it == begin || *it != *(it - 1)) edges.push_back({v, *it});
+  }
+  return edges;
+}
+
+std::vector<BoundaryFacet> boundary_facets(const Mesh& mesh) {
+  const int d = mesh.dim();
+  if (d == 0) return {};
+  const int nv = mesh.num_vertices();
+
+  // Calls fn(instance, cell, local, sorted key) for every facet of every element. The key is the
+  // facet's corners sorted and padded with -1, so a triangle never equals a quad.
+  auto for_each_facet = [&](auto&& fn) {
+    std::uint32_t inst = 0;
+    for (int c = 0; c < mesh.num_cells(); ++c) {
+      const CellInfo& info = cell_info(mesh.cell_type(c));
+      if (info.dim != d) continue;
+      const std::int32_t* nodes = mesh.cell(c);
+      for (int f = 0; f < info.num_facets; ++f, ++inst) {
+        const CellFacet& facet = info.facets[f];
+        std::int32_t key[4] = {-1, -1, -1, -1};
+        for (int k = 0; k < facet.num_corners; ++k) key[k] = nodes[facet.corners[k]];
+        SortSmall(key, facet.num_corners);
+        fn(inst, c, f, key);
+      }
+    }
+    return inst;
+  };
+
+  // Bucket the instances by their smallest corner (counting sort): two instances of one facet
+  // share a bucket, and buckets hold a few dozen entries, so sorting them is cheap.
+  struct Entry {
+    std::int32_t rest[3];  // the other sorted corners
+    std::uint32_t inst;    // facet instance (limits a mesh to 2^32 element facets)
+  };
+  std::vector<std::int64_t> offsets(nv + 1, 0);
+  const std::uint32_t total = for_each_facet(
+      [&](std::uint32_t, int, int, const std::int32_t* key) { ++offsets[key[0] + 1]; });
+  for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
+  std::vector<Entry> entries(total);
+  {
+    std::vector<std::int64_t> fill(offsets.begin(), offsets.end() - 1);
+    for_each_facet([&](std::uint32_t inst, int, int, const std::int32_t* key) {
+      entries[fill[key[0]]++] = Entry{{key[1], key[2], key[3]}, inst};
+    });
+  }
+  auto less = [](const Entry& a, const Entry& b) {
+    if (a.rest[0] != b.rest[0]) return a.rest[0] < b.rest[0];
+    if (a.rest[1] != b.rest[1]) return a.rest[1] < b.rest[1];
+    return a.rest[2] < b.rest[2];
+  };
+  auto same = [](const Entry& a, const Entry& b) {
+    return a.rest[0] == b.rest[0] && a.rest[1] == b.rest[1] && a.rest[2] == b.rest[2];
+  };
+  std::vector<char> single(total, 0);
+  for (int v = 0; v < nv; ++v) {
+    Entry* begin = entries.data() + offsets[v];
+    Entry* end = entries.data() + offsets[v + 1];
+    std::sort(begin, end, less);
+    for (Entry* e = begin; e != end;) {
+      Entry* run = e + 1;
+      while (run != end && same(*run, *e)) ++run;
+      if (run == e + 1) single[e->inst] = 1;
+      e = run;
+    }
+  }
+
+  std::vector<BoundaryFacet> out;
+  for_each_facet([&](std::uint32_t inst, int c, int local, const std::int32_t*) {
+    if (!single[inst]) return;
+    BoundaryFacet f;
+    f.cell = c;
+    f.local = static_cast<std::int8_t>(local);
+    for (int k = 0; k < 4; ++k) f.corners[k] = -1;
+    f.num_corners = static_cast<std::int8_t>(FacetCorners(mesh, c, local, f.corners));
+    out.push_back(f);
+  });
+  return out;
+}
+
+std::vector<char> boundary_vertex_mask(const Mesh& mesh) {
+  static const FacetNodes facet_nodes;
+  std::vector<char> mask(mesh.num_vertices(), 0);
+  for (const BoundaryFacet& f : boundary_facets(mesh)) {
+    for (int k = 0; k < f.num_corners; ++k) mask[f.corners[k]] = 1;
+    const int t = static_cast<int>(mesh.cell_type(f.cell));
+    const std::int32_t* nodes = mesh.cell(f.cell);
+    for (int k = 0; k < facet_nodes.count[t][f.local]; ++k)
+      mask[nodes[facet_nodes.nodes[t][f.local][k]]] = 1;
+  }
+  return mask;
+}
+
+Adjacency vertex_to_cells(const Mesh& mesh) {
+  const int d = mesh.dim();
+  const int nv = mesh.num_vertices();
+  Adjacency adj;
+  adj.offsets.assign(nv + 1, 0);
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (cell_dim(mesh.cell_type(c)) != d) continue;
+    const std::int32_t* n = mesh.cell(c);
+    for (int k = 0; k < mesh.cell_size(c); ++k) ++adj.offsets[n[k] + 1];
+  }
+  for (int v = 0; v < nv; ++v) adj.offsets[v + 1] += adj.offsets[v];
+  adj.items.resize(adj.offsets[nv]);
+  std::vector<std::int64_t> fill(adj.offsets.begin(), adj.offsets.end() - 1);
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (cell_dim(mesh.cell_type(c)) != d) continue;
+    const std::int32_t* n = mesh.cell(c);
+    for (int k = 0; k < mesh.cell_size(c); ++k) adj.items[fill[n[k]]++] = c;
+  }
+  return adj;
+}
+
+}  // namespace tmop
