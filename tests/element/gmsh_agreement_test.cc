@@ -100,9 +100,11 @@ TEST(GmshAgreement, MeshNodesFollowTheTable) {
       expect_average(26, corners, 8, "centre");
     }
     if (info.dim == 3) {
-      const double centroid[3] = {t == CellType::kHex8 || t == CellType::kHex27 ? 0.0 : 0.25,
-                                  t == CellType::kHex8 || t == CellType::kHex27 ? 0.0 : 0.25,
-                                  t == CellType::kWedge6 ? 0.0 : 0.25};
+      const CellType lin = info.linear;
+      double centroid[3] = {0.25, 0.25, 0.25};  // tet
+      if (lin == CellType::kHex8) centroid[0] = centroid[1] = centroid[2] = 0;
+      if (lin == CellType::kWedge6) centroid[0] = centroid[1] = 1.0 / 3, centroid[2] = 0;
+      if (lin == CellType::kPyramid5) centroid[0] = centroid[1] = 0;
       double A[9];
       cell_jacobian(t, x, 3, centroid, A);
       const double det = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
@@ -111,7 +113,7 @@ TEST(GmshAgreement, MeshNodesFollowTheTable) {
     }
     ++checked[info.name];
   }
-  for (const char* name : {"tri6", "quad9", "tet10", "hex27", "wedge6"})
+  for (const char* name : {"tri6", "quad9", "tet10", "hex27", "wedge6", "tet4", "hex8", "pyramid5"})
     EXPECT_GT(checked[name], 0) << "gmsh produced no " << name;
 }
 

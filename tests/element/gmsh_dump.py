@@ -78,4 +78,23 @@ gmsh.model.occ.synchronize()
 gmsh.model.mesh.generate(3)
 dump_elements()
 gmsh.model.remove()
+# A hex box glued to a tet box: gmsh puts pyramids on the shared quad face.
+gmsh.model.add("pyramids")
+gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1)
+gmsh.model.occ.addBox(1, 0, 0, 1, 1, 1)
+gmsh.model.occ.fragment([(3, 1)], [(3, 2)])
+gmsh.model.occ.synchronize()
+gmsh.option.setNumber("Mesh.MeshSizeMax", 0.5)
+hex_box = gmsh.model.getEntitiesInBoundingBox(-0.1, -0.1, -0.1, 1.1, 1.1, 1.1, 3)[0][1]
+for c in gmsh.model.getBoundary([(3, hex_box)], combined=False, recursive=True):
+    if c[0] == 1:
+        gmsh.model.mesh.setTransfiniteCurve(c[1], 3)
+for s in gmsh.model.getBoundary([(3, hex_box)], combined=False):
+    gmsh.model.mesh.setTransfiniteSurface(abs(s[1]))
+    gmsh.model.mesh.setRecombine(2, abs(s[1]))
+gmsh.model.mesh.setTransfiniteVolume(hex_box)
+gmsh.model.mesh.setRecombine(3, hex_box)
+gmsh.model.mesh.generate(3)
+dump_elements()
+gmsh.model.remove()
 gmsh.finalize()
