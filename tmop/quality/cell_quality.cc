@@ -1,0 +1,293 @@
+#include "tmop/quality/cell_quality.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "tmop/element/bezier.h"
+#include "tmop/element/sample_points.h"
+#include "tmop/element/shape.h"
+#include "tmop/quality/corner_frames.h"
+#include "tmop/quality/ideal_element.h"
+
+namespace tmop {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kDegPerRad = 57.295779513082320876798154814105;
+constexpr double kSqrt3 = 1.7320508075688772;
+
+Vec3 node(const double* nodes, int i) { return Vec3(nodes + 3 * i); }
+
+// The Jacobian measures of one T = A W^-1.
+struct TMeasures {
+  double det;
+  double cond;        // |T| |T^-1| / d, +inf when det <= 0
+  double mean_ratio;  // d det^(2/d) / |T|^2 with the sign of det
+};
+
+TMeasures measure_t(const Eigen::Matrix2d& t) {
+  TMeasures m;
+  m.det = t.determinant();
+  const double f2 = t.squaredNorm();
+  // In 2D |adj T| = |T|, so |T| |T^-1| = |T|^2 / |det T|.
+  m.cond = m.det > 0 ? f2 / (2 * m.det) : kInf;
+  m.mean_ratio = f2 > 0 ? 2 * m.det / f2 : 0;
+  return m;
+}
+
+TMeasures measure_t(const Eigen::Matrix3d& t) {
+  // The rows of adj(T) are the cross products of T's columns: no division before the sign test.
+  const Vec3 c0 = t.col(1).cross(t.col(2));
+  const Vec3 c1 = t.col(2).cross(t.col(0));
+  const Vec3 c2 = t.col(0).cross(t.col(1));
+  TMeasures m;
+  m.det = t.col(0).dot(c0);
+  const double f2 = t.squaredNorm();
+  const double a2 = c0.squaredNorm() + c1.squaredNorm() + c2.squaredNorm();
+  m.cond = m.det > 0 ? std::sqrt(f2 * a2) / (3 * m.det) : kInf;
+  m.mean_ratio = f2 > 0 ? 3 * std::copysign(std::cbrt(m.det * m.det), m.det) / f2 : 0;
+  return m;
+}
+
+// The two faces (indices into cell_info(kTet4).facets) that meet at each tet edge.
+using TetEdgeFaces = std::array<std::array<int, 2>, 6>;
+TetEdgeFaces build_tet_edge_faces() {
+  const CellInfo& tet = cell_info(CellType::kTet4);
+  TetEdgeFaces out{};
+  for (int e = 0; e < 6; ++e) {
+    int n = 0;
+    for (int f = 0; f < 4; ++f) {
+      int hits = 0;
+      for (int k = 0; k < 3; ++k)
+        hits += tet.facets[f].corners[k] == tet.edges[e][0] ||
+                tet.facets[f].corners[k] == tet.edges[e][1];
+      if (hits == 2) out[e][n++] = f;
+    }
+  }
+  return out;
+}
+
+void tet_dihedral_angles(const double* nodes, CellQuality* q) {
+  static const TetEdgeFaces edge_faces = build_tet_edge_faces();
+  const CellFacet* facets = cell_info(CellType::kTet4).facets;
+  Vec3 normal[4];
+  for (int f = 0; f < 4; ++f) {
+    const Vec3 a = node(nodes, facets[f].corners[0]);
+    normal[f] =
+        (node(nodes, facets[f].corners[1]) - a).cross(node(nodes, facets[f].corners[2]) - a);
+  }
+  double lo = kInf, hi = -kInf;
+  for (int e = 0; e < 6; ++e) {
+    const Vec3& n1 = normal[edge_faces[e][0]];
+    const Vec3& n2 = normal[edge_faces[e][1]];
+    // The facets' normals all point outward (or, inverted, all inward): the interior angle is
+    // pi minus the angle between them. atan2 keeps full precision near 0 and 180 degrees.
+    const double angle = std::atan2(n1.cross(n2).norm(), -n1.dot(n2)) * kDegPerRad;
+    lo = std::min(lo, angle);
+    hi = std::max(hi, angle);
+  }
+  q->min_dihedral_deg = lo;
+  q->max_dihedral_deg = hi;
+}
+
+// Newell normal of the corner polygon of a 2D cell (twice its area vector).
+Vec3 polygon_normal(int num_corners, const double* nodes) {
+  return num_corners == 3
+             ? (node(nodes, 1) - node(nodes, 0)).cross(node(nodes, 2) - node(nodes, 0))
+             : (node(nodes, 2) - node(nodes, 0)).cross(node(nodes, 3) - node(nodes, 1));
+}
+
+// Interior angles of the corner polygon; a corner turning against `normal` is reflex.
+void polygon_angles(int num_corners, const double* nodes, const Vec3& normal, CellQuality* q) {
+  double lo = kInf, hi = -kInf;
+  for (int i = 0; i < num_corners; ++i) {
+    const Vec3 x = node(nodes, i);
+    const Vec3 e1 = node(nodes, (i + 1) % num_corners) - x;
+    const Vec3 e2 = node(nodes, (i + num_corners - 1) % num_corners) - x;
+    const Vec3 c = e1.cross(e2);
+    double angle = std::atan2(std::copysign(c.norm(), c.dot(normal)), e1.dot(e2)) * kDegPerRad;
+    if (angle < 0) angle += 360;
+    lo = std::min(lo, angle);
+    hi = std::max(hi, angle);
+  }
+  q->min_angle_deg = lo;
+  q->max_angle_deg = hi;
+}
+
+// Projects a 2D cell onto its plane: p gets 2 coordinates per node in the right-handed frame
+// (t1, t2, n).
+void project_to_plane(int num_nodes, const double* nodes, const Vec3& n, double* p) {
+  const Vec3 x0 = node(nodes, 0);
+  const Vec3 t1 = n.unitOrthogonal();
+  const Vec3 t2 = n.cross(t1);
+  for (int i = 0; i < num_nodes; ++i) {
+    const Vec3 r = node(nodes, i) - x0;
+    p[2 * i] = r.dot(t1);
+    p[2 * i + 1] = r.dot(t2);
+  }
+}
+
+template <int D>
+using Mat = Eigen::Matrix<double, D, D>;
+template <int D>
+using RowMajorMap = Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>>;
+
+// Corner-frame measures: scaled Jacobian always; det / condition number for linear types.
+template <int D>
+void measure_corners(CellType type, const double* p, bool linear, CellQuality* q) {
+  const CornerFrames& frames = corner_frames(type);
+  double sj = kInf, min_det = kInf, cond = 0;
+  for (int k = 0; k < frames.count; ++k) {
+    const CornerFrame& f = frames.frame[k];
+    Mat<D> e;
+    double lengths = 1;
+    for (int j = 0; j < D; ++j) {
+      for (int i = 0; i < D; ++i) e(i, j) = p[D * f.ends[j] + i] - p[D * f.corner + i];
+      lengths *= e.col(j).norm();
+    }
+    const double det = e.determinant();
+    sj = std::min(sj, lengths > 0 ? det / lengths / f.ideal_scaled : 0.0);
+    if (linear) {
+      const TMeasures m = measure_t(Mat<D>(e * RowMajorMap<D>(f.ideal_inverse)));
+      min_det = std::min(min_det, m.det);
+      cond = std::max(cond, m.cond);
+    }
+  }
+  q->scaled_jacobian = sj;
+  if (linear) {
+    q->min_det = min_det;
+    q->condition_number = cond;
+  }
+}
+
+// W^-1 of every type that has ideal_reference_jacobian (row-major, d x d), computed once.
+struct IdealInverses {
+  double w_inv[kNumCellTypes][9];
+};
+IdealInverses build_ideal_inverses() {
+  IdealInverses out{};
+  for (int t = 0; t < kNumCellTypes; ++t) {
+    const CellType type = static_cast<CellType>(t);
+    const CellInfo& info = cell_info(type);
+    if (info.order != 2 || info.dim < 2) continue;
+    const double* w = ideal_reference_jacobian(type);
+    if (info.dim == 2) {
+      Eigen::Map<Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(out.w_inv[t]) =
+          RowMajorMap<2>(w).inverse();
+    } else {
+      Eigen::Map<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(out.w_inv[t]) =
+          RowMajorMap<3>(w).inverse();
+    }
+  }
+  return out;
+}
+
+// Jacobian measures of a quadratic cell at its sample points and corners.
+template <int D>
+void measure_samples(CellType type, const double* p, const QualityOptions& options,
+                     CellQuality* q) {
+  static const IdealInverses inverses = build_ideal_inverses();
+  const RowMajorMap<D> w_inv(inverses.w_inv[static_cast<int>(type)]);
+  const bool simplex =
+      cell_info(type).linear == CellType::kTri3 || cell_info(type).linear == CellType::kTet4;
+  const std::vector<SamplePoint>& rule = sample_points(type, options.sample_rule);
+  const bool rule_has_corners = options.sample_rule == SampleRule::kDefault ||
+                                options.sample_rule == SampleRule::kCorners ||
+                                options.sample_rule == SampleRule::kNodes;
+  double min_det = kInf, cond = 0, mean_ratio = kInf;
+  auto visit = [&](const std::vector<SamplePoint>& points) {
+    for (const SamplePoint& s : points) {
+      double a[D * D];
+      cell_jacobian(type, p, D, s.xi, a);
+      const TMeasures m = measure_t(Mat<D>(RowMajorMap<D>(a) * w_inv));
+      min_det = std::min(min_det, m.det);
+      cond = std::max(cond, m.cond);
+      mean_ratio = std::min(mean_ratio, m.mean_ratio);
+    }
+  };
+  visit(rule);
+  if (!rule_has_corners) visit(sample_points(type, SampleRule::kCorners));
+  q->min_det = min_det;
+  q->condition_number = cond;
+  if (simplex) q->mean_ratio = mean_ratio;
+}
+
+}  // namespace
+
+CellQuality cell_quality(CellType type, const double* nodes, const double* up,
+                         const QualityOptions& options) {
+  CellQuality q;
+  const CellInfo& info = cell_info(type);
+  const int d = info.dim;
+  if (d < 2) return q;
+
+  double lmin2 = kInf, lmax2 = 0, sum_l2 = 0;
+  for (int e = 0; e < info.num_edges; ++e) {
+    const double l2 = (node(nodes, info.edges[e][1]) - node(nodes, info.edges[e][0])).squaredNorm();
+    lmin2 = std::min(lmin2, l2);
+    lmax2 = std::max(lmax2, l2);
+    sum_l2 += l2;
+  }
+  q.min_edge_length = std::sqrt(lmin2);
+  q.max_edge_length = std::sqrt(lmax2);
+
+  // Coordinates in the cell's own dimension: 3D cells as they are, 2D cells in their plane.
+  double projected[kMaxCellNodes * 2];
+  const double* p = nodes;
+  if (d == 2) {
+    const Vec3 own = polygon_normal(info.num_corners, nodes);
+    if (options.angles) polygon_angles(info.num_corners, nodes, own, &q);
+    Vec3 n(0, 0, 1);
+    if (up != nullptr) {
+      n = Vec3(up);
+    } else if (own.squaredNorm() > 0) {
+      n = own.normalized();
+    }
+    project_to_plane(info.num_nodes, nodes, n, projected);
+    p = projected;
+  } else if (info.linear == CellType::kTet4 && options.angles) {
+    tet_dihedral_angles(nodes, &q);
+  }
+
+  const bool linear = info.order == 1;
+  if (d == 2) {
+    measure_corners<2>(type, p, linear, &q);
+    if (!linear) measure_samples<2>(type, p, options, &q);
+  } else {
+    measure_corners<3>(type, p, linear, &q);
+    if (!linear) measure_samples<3>(type, p, options, &q);
+  }
+
+  // Mean ratio of linear simplices by the edge formulas (T is constant; det T relative to the
+  // ideal unit-edge element): tri 4 sqrt3 A / sum l^2, tet 12 (3V)^(2/3) / sum l^2, signed.
+  if (type == CellType::kTri3) {
+    const double area = q.min_det * (kSqrt3 / 4);  // ideal triangle area sqrt3/4
+    q.mean_ratio = sum_l2 > 0 ? 4 * kSqrt3 * area / sum_l2 : 0;
+  } else if (type == CellType::kTet4) {
+    const double three_v = q.min_det * (1 / (2 * 1.4142135623730951));  // 3V, ideal V = 1/(6 sqrt2)
+    q.mean_ratio =
+        sum_l2 > 0 ? 12 * std::copysign(std::cbrt(three_v * three_v), three_v) / sum_l2 : 0;
+  }
+
+  q.inverted = !(q.min_det > 0);
+  if (type == CellType::kTri3 || type == CellType::kTet4 || type == CellType::kQuad4) {
+    // det J is constant (simplices) or affine in xi (the bilinear quad): the corners decide.
+    q.certified = q.inverted ? 0 : 1;
+  } else if (options.bezier_certificate && jacobian_bezier_count(type) > 0) {
+    double coefficients[kMaxBezierCoefficients];
+    const int n = jacobian_bezier_coefficients(type, p, coefficients);
+    const bool positive =
+        std::all_of(coefficients, coefficients + n, [](double c) { return c > 0; });
+    q.certified = positive ? 1 : 0;
+    // Only the quadratic simplices count an unproven cell as inverted: their det J can dip
+    // below 0 between sample points, which is what the optimizer must never leave behind. For
+    // hex8 / wedge6 / quad9 the bound is reported but is too pessimistic to call cells inverted.
+    if (type == CellType::kTri6 || type == CellType::kTet10) q.inverted = q.inverted || !positive;
+  }
+  return q;
+}
+
+}  // namespace tmop

@@ -1,0 +1,35 @@
+// tmop/quality/quality_options.h
+// Options of compute_quality (quality_report.h) and cell_quality (cell_quality.h).
+#ifndef TMOP_QUALITY_QUALITY_OPTIONS_H_
+#define TMOP_QUALITY_QUALITY_OPTIONS_H_
+
+#include "tmop/element/sample_points.h"
+
+namespace tmop {
+
+struct QualityOptions {
+  // Where the Jacobian of quadratic cells (tri6, quad9, tet10, hex27) is evaluated for min_det,
+  // condition_number and the mean ratio of tri6/tet10. The corners are always added. Default: the
+  // default rule of element/sample_points.h (corners + mid-edge nodes (+ face/centre nodes)).
+  // Linear cells are measured at their corners (corner_frames.h) whatever the rule: their
+  // Jacobian is constant (simplices) or extreme at the corners (quad4).
+  SampleRule sample_rule = SampleRule::kDefault;
+
+  // tri6 / tet10: also bound det J over the whole cell by its Bernstein coefficients
+  // (element/bezier.h). A cell whose coefficients are not all > 0 is reported inverted even when no
+  // sample point shows det J <= 0: it cannot be proven valid. Default on; turn off to report
+  // sample-point inversion only.
+  bool bezier_certificate = true;
+
+  // Angles and dihedral angles (atan2 per corner / edge: the most expensive measures). Off leaves
+  // them NaN; count_inverted and worst_quality turn them off.
+  bool angles = true;
+
+  // Worker threads of compute_quality; 0 = std::thread::hardware_concurrency(). The results,
+  // including every sum, are identical for every thread count.
+  int threads = 0;
+};
+
+}  // namespace tmop
+
+#endif  // TMOP_QUALITY_QUALITY_OPTIONS_H_
