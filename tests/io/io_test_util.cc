@@ -1,0 +1,227 @@
+#include "io_test_util.h"
+
+#include <gtest/gtest.h>
+#include <stdio.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "tmop/io/node_order.h"
+
+namespace tmop {
+namespace test {
+
+std::vector<CellType> all_types() {
+  std::vector<CellType> t;
+  for (int i = 0; i < kNumCellTypes; ++i) t.push_back(static_cast<CellType>(i));
+  return t;
+}
+
+Mesh make_mesh(const std::vector<CellType>& types, int space_dim) {
+  Mesh m;
+  m.space_dim = space_dim;
+  const int nv = 60;
+  for (int v = 0; v < nv; ++v) {
+    // Irrational-looking values exercise the full 17 significant digits.
+    double x[3] = {std::sin(1.0 + v) * 1e3 / 7.0, std::cos(0.5 * v) / 3.0,
+                   space_dim == 3 ? std::sqrt(2.0 + v) * 1e-5 : 0.0};
+    if (v == 3) x[0] = -0.0;
+    m.add_vertex(x);
+  }
+  int next = 0;
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    const CellType t = types[i];
+    std::int32_t nodes[kMaxCellNodes];
+    for (int k = 0; k < cell_num_nodes(t); ++k) nodes[k] = (next + 7 * k) % nv;
+    next += 5;
+    // region and entity derived from the type: one region per (dim, entity).
+    const int region = 10 + static_cast<int>(t);
+    const int entity = 100 + static_cast<int>(t);
+    m.add_cell(t, nodes, region, entity);
+  }
+  return m;
+}
+
+std::string diff_meshes(const Mesh& a, const Mesh& b, bool compare_entity, double tol) {
+  std::ostringstream s;
+  if (a.space_dim != b.space_dim) {
+    s << "space_dim " << a.space_dim << " vs " << b.space_dim;
+    return s.str();
+  }
+  if (a.coords.size() != b.coords.size()) {
+    s << "coords size " << a.coords.size() << " vs " << b.coords.size();
+    return s.str();
+  }
+  for (std::size_t i = 0; i < a.coords.size(); ++i) {
+    const bool eq = tol == 0.0 ? std::memcmp(&a.coords[i], &b.coords[i], sizeof(double)) == 0 ||
+                                     a.coords[i] == b.coords[i]
+                               : std::fabs(a.coords[i] - b.coords[i]) <= tol;
+    if (!eq) {
+      s.precision(17);
+      s << "coord " << i << ": " << a.coords[i] << " vs " << b.coords[i];
+      return s.str();
+    }
+  }
+  if (a.num_cells() != b.num_cells()) {
+    s << "cells " << a.num_cells() << " vs " << b.num_cells();
+    return s.str();
+  }
+  for (int c = 0; c < a.num_cells(); ++c) {
+    if (a.cell_types[c] != b.cell_types[c]) {
+      s << "cell " << c << " type " << cell_name(a.cell_types[c]) << " vs "
+        << cell_name(b.cell_types[c]);
+      return s.str();
+    }
+    for (int k = 0; k < a.cell_size(c); ++k)
+      if (a.cell(c)[k] != b.cell(c)[k]) {
+        s << "cell " << c << " node " << k << ": " << a.cell(c)[k] << " vs " << b.cell(c)[k];
+        return s.str();
+      }
+    if (a.cell_region[c] != b.cell_region[c]) {
+      s << "cell " << c << " region " << a.cell_region[c] << " vs " << b.cell_region[c];
+      return s.str();
+    }
+    if (compare_entity && a.cell_entity[c] != b.cell_entity[c]) {
+      s << "cell " << c << " entity " << a.cell_entity[c] << " vs " << b.cell_entity[c];
+      return s.str();
+    }
+  }
+  return "";
+}
+
+std::string temp_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string dir = std::string(TMOP_BINARY_DIR) + "/io_test_tmp";
+  mkdir(dir.c_str(), 0755);
+  dir += "/" + std::string(info->test_suite_name()) + "." + info->name();
+  std::string out;
+  run("rm -rf '" + dir + "'", &out);
+  mkdir(dir.c_str(), 0755);
+  return dir;
+}
+
+int run(const std::string& command, std::string* out) {
+  out->clear();
+  FILE* p = popen((command + " 2>&1").c_str(), "r");
+  if (!p) return -1;
+  char buf[4096];
+  std::size_t n;
+  while ((n = fread(buf, 1, sizeof(buf), p)) > 0) out->append(buf, n);
+  const int status = pclose(p);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+bool have_program(const std::string& name) {
+  std::string out;
+  return run("command -v " + name, &out) == 0;
+}
+
+bool have_python_module(const std::string& module) {
+  std::string out;
+  return run("/usr/bin/python3 -c 'import " + module + "'", &out) == 0;
+}
+
+std::string python_helper() { return std::string(TMOP_SOURCE_DIR) + "/tests/io/mesh_dump.py"; }
+
+namespace {
+
+std::string cell_line(CellType t, int region, const std::int32_t* nodes) {
+  std::string s = std::string(cell_name(t)) + " " + std::to_string(region);
+  for (int k = 0; k < cell_num_nodes(t); ++k) s += " " + std::to_string(nodes[k]);
+  return s;
+}
+
+}  // namespace
+
+bool parse_dump(const std::string& text, Dump* dump, std::string* error) {
+  std::istringstream in(text);
+  std::string word, order;
+  std::size_t np = 0, nc = 0;
+  // Skip anything before "order" (e.g. library warnings).
+  while (in >> word && word != "order") {
+  }
+  if (!(in >> order) || (order != "gmsh" && order != "vtk")) {
+    *error = "no 'order' line in dump: " + text.substr(0, 400);
+    return false;
+  }
+  if (!(in >> word >> np) || word != "points") {
+    *error = "bad points header";
+    return false;
+  }
+  dump->xyz.resize(3 * np);
+  for (std::size_t i = 0; i < 3 * np; ++i) {
+    if (!(in >> word)) {
+      *error = "truncated points";
+      return false;
+    }
+    dump->xyz[i] = std::strtod(word.c_str(), nullptr);
+  }
+  if (!(in >> word >> nc) || word != "cells") {
+    *error = "bad cells header";
+    return false;
+  }
+  dump->cells.clear();
+  for (std::size_t c = 0; c < nc; ++c) {
+    std::string name;
+    int region;
+    if (!(in >> name >> region)) {
+      *error = "truncated cells";
+      return false;
+    }
+    CellType t;
+    if (!cell_type_from_name(name, &t)) {
+      *error = "unknown type in dump: " + name;
+      return false;
+    }
+    std::int32_t file_nodes[kMaxCellNodes], nodes[kMaxCellNodes];
+    for (int k = 0; k < cell_num_nodes(t); ++k) in >> file_nodes[k];
+    const int* p = io::gmsh_index_of_vtk_node(t);
+    for (int k = 0; k < cell_num_nodes(t); ++k) {
+      if (order == "vtk")
+        nodes[p[k]] = file_nodes[k];
+      else
+        nodes[k] = file_nodes[k];
+    }
+    dump->cells.push_back(cell_line(t, region, nodes));
+  }
+  return true;
+}
+
+Dump dump_of(const Mesh& mesh) {
+  Dump d;
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    for (int k = 0; k < 3; ++k) d.xyz.push_back(k < mesh.space_dim ? mesh.vertex(v)[k] : 0.0);
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    d.cells.push_back(cell_line(mesh.cell_types[c], mesh.cell_region[c], mesh.cell(c)));
+  return d;
+}
+
+std::string diff_dumps(const Dump& a, const Dump& b) {
+  std::ostringstream s;
+  s.precision(17);
+  if (a.xyz.size() != b.xyz.size()) {
+    s << "points " << a.xyz.size() / 3 << " vs " << b.xyz.size() / 3;
+    return s.str();
+  }
+  for (std::size_t i = 0; i < a.xyz.size(); ++i)
+    if (a.xyz[i] != b.xyz[i]) {
+      s << "coordinate " << i << ": " << a.xyz[i] << " vs " << b.xyz[i];
+      return s.str();
+    }
+  std::vector<std::string> ca = a.cells, cb = b.cells;
+  std::sort(ca.begin(), ca.end());
+  std::sort(cb.begin(), cb.end());
+  if (ca.size() != cb.size()) {
+    s << "cells " << ca.size() << " vs " << cb.size();
+    return s.str();
+  }
+  for (std::size_t i = 0; i < ca.size(); ++i)
+    if (ca[i] != cb[i]) return "cell '" + ca[i] + "' vs '" + cb[i] + "'";
+  return "";
+}
+
+}  // namespace test
+}  // namespace tmop

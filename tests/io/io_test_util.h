@@ -1,0 +1,51 @@
+// tests/io/io_test_util.h
+// Shared helpers for the io tests: sample meshes covering every cell type, exact mesh
+// comparison, a per-test temporary directory, running external programs, and parsing the
+// canonical dump printed by tests/io/mesh_dump.py (gmsh / meshio as independent readers).
+#ifndef TMOP_TESTS_IO_IO_TEST_UTIL_H_
+#define TMOP_TESTS_IO_IO_TEST_UTIL_H_
+
+#include <string>
+#include <vector>
+
+#include "tmop/mesh/mesh.h"
+
+namespace tmop {
+namespace test {
+
+// A 3D mesh holding one or more cells of each listed type, with distinct non-round coordinates,
+// regions and entities (each (dim, entity) pair has a single region, as Gmsh requires).
+Mesh make_mesh(const std::vector<CellType>& types, int space_dim = 3);
+// Every type tmop knows, 3D.
+std::vector<CellType> all_types();
+
+// Empty string when equal, otherwise the first difference. Compares space_dim, coordinates
+// bit-exactly (or within tol), types, nodes, regions and (if compare_entity) entities.
+std::string diff_meshes(const Mesh& a, const Mesh& b, bool compare_entity = true, double tol = 0.0);
+
+// A fresh empty directory under the build tree, named after the current test.
+std::string temp_dir();
+
+// Runs a shell command; returns its exit code, stdout in *out.
+int run(const std::string& command, std::string* out);
+bool have_program(const std::string& name);
+// True when /usr/bin/python3 can import the module.
+bool have_python_module(const std::string& module);
+
+// The canonical dump (see mesh_dump.py): points, then cells as "type region nodes...". The
+// dump's node order (gmsh or vtk) is converted to Gmsh order. Cells are kept in dump order.
+struct Dump {
+  std::vector<double> xyz;         // 3 per point
+  std::vector<std::string> cells;  // "type region n0 n1 ..." in Gmsh order, 0-based
+};
+bool parse_dump(const std::string& text, Dump* dump, std::string* error);
+Dump dump_of(const Mesh& mesh);  // the same canonical form from a tmop Mesh
+// Empty when equal; cells compared as sorted lists (readers may regroup cells by type).
+std::string diff_dumps(const Dump& a, const Dump& b);
+
+std::string python_helper();  // path of mesh_dump.py
+
+}  // namespace test
+}  // namespace tmop
+
+#endif  // TMOP_TESTS_IO_IO_TEST_UTIL_H_
