@@ -186,8 +186,11 @@ TEST(Topology, MillionTetsAreFast) {
   EXPECT_EQ(facets.size(), std::size_t(4) * (nx * ny + ny * nz + nx * nz));
   RecordProperty("boundary_facets_seconds", std::to_string(seconds));
   std::printf("boundary_facets on %d tets: %.3f s\n", m.num_cells(), seconds);
-  // Generous bound: the machine is shared; typical is ~0.2 s in a Release build.
+  // Generous bound: the machine is shared; typical is ~0.2 s in a Release build. Sanitized and
+  // unoptimized builds are 10-20x slower and only check correctness.
+#if defined(NDEBUG) && !defined(__SANITIZE_ADDRESS__)
   EXPECT_LT(seconds, 3.0);
+#endif
 }
 
 }  // namespace
