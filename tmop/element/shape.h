@@ -1,9 +1,14 @@
 // tmop/element/shape.h
-// Reference elements (Gmsh's): tri (0,0) (1,0) (0,1); quad [-1,1]^2; tet (0,0,0) (1,0,0) (0,1,0)
-// (0,0,1); hex [-1,1]^3; wedge = tri x [-1,1] (xi, eta in the triangle, zeta in [-1,1]);
-// pyramid: base [-1,1]^2 at zeta = 0, apex (0,0,1). Node order is Gmsh's (cell_type.h).
+// Reference elements (Gmsh's): line [-1,1]; tri (0,0) (1,0) (0,1); quad [-1,1]^2; tet (0,0,0)
+// (1,0,0) (0,1,0) (0,0,1); hex [-1,1]^3; wedge = tri x [-1,1] (xi, eta in the triangle, zeta in
+// [-1,1]); pyramid: base [-1,1]^2 at zeta = 0, apex (0,0,1). Node order is Gmsh's (cell_type.h);
+// tests/element/gmsh_agreement_test.cc checks both against the gmsh module itself.
+// Bases: Lagrange (tensor products of 1D Lagrange for quad/hex, barycentric for simplices,
+// triangle x line for the wedge); the pyramid uses Gmsh's rational basis
+// N = (1 - zeta +- xi)(1 - zeta +- eta) / (4 (1 - zeta)) for the base nodes, N = zeta for the apex.
 //
-// All functions here are allocation-free and safe to call from many threads.
+// All functions here are allocation-free, have no failure mode (type must be a valid enum value,
+// arrays large enough) and are safe to call from many threads.
 #ifndef TMOP_ELEMENT_SHAPE_H_
 #define TMOP_ELEMENT_SHAPE_H_
 
