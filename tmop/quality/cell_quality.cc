@@ -33,8 +33,10 @@ TMeasures measure_t(const Eigen::Matrix2d& t) {
   m.det = t.determinant();
   const double f2 = t.squaredNorm();
   // In 2D |adj T| = |T|, so |T| |T^-1| = |T|^2 / |det T|.
-  m.cond = m.det > 0 ? f2 / (2 * m.det) : kInf;
-  m.mean_ratio = f2 > 0 ? 2 * m.det / f2 : 0;
+  // Both are bounded (AM-GM on the singular values); clamping removes round-off past the bound,
+  // which would otherwise push ideal cells out of the top histogram bin.
+  m.cond = m.det > 0 ? std::max(1.0, f2 / (2 * m.det)) : kInf;
+  m.mean_ratio = f2 > 0 ? std::min(1.0, 2 * m.det / f2) : 0;
   return m;
 }
 
@@ -47,8 +49,9 @@ TMeasures measure_t(const Eigen::Matrix3d& t) {
   m.det = t.col(0).dot(c0);
   const double f2 = t.squaredNorm();
   const double a2 = c0.squaredNorm() + c1.squaredNorm() + c2.squaredNorm();
-  m.cond = m.det > 0 ? std::sqrt(f2 * a2) / (3 * m.det) : kInf;
-  m.mean_ratio = f2 > 0 ? 3 * std::copysign(std::cbrt(m.det * m.det), m.det) / f2 : 0;
+  m.cond = m.det > 0 ? std::max(1.0, std::sqrt(f2 * a2) / (3 * m.det)) : kInf;
+  m.mean_ratio =
+      f2 > 0 ? std::min(1.0, 3 * std::copysign(std::cbrt(m.det * m.det), m.det) / f2) : 0;
   return m;
 }
 
@@ -265,11 +268,13 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
   // ideal unit-edge element): tri 4 sqrt3 A / sum l^2, tet 12 (3V)^(2/3) / sum l^2, signed.
   if (type == CellType::kTri3) {
     const double area = q.min_det * (kSqrt3 / 4);  // ideal triangle area sqrt3/4
-    q.mean_ratio = sum_l2 > 0 ? 4 * kSqrt3 * area / sum_l2 : 0;
+    q.mean_ratio = sum_l2 > 0 ? std::min(1.0, 4 * kSqrt3 * area / sum_l2) : 0;
   } else if (type == CellType::kTet4) {
     const double three_v = q.min_det * (1 / (2 * 1.4142135623730951));  // 3V, ideal V = 1/(6 sqrt2)
     q.mean_ratio =
-        sum_l2 > 0 ? 12 * std::copysign(std::cbrt(three_v * three_v), three_v) / sum_l2 : 0;
+        sum_l2 > 0
+            ? std::min(1.0, 12 * std::copysign(std::cbrt(three_v * three_v), three_v) / sum_l2)
+            : 0;
   }
 
   q.inverted = !(q.min_det > 0);

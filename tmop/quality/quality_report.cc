@@ -54,7 +54,7 @@ QualityReport compute_quality(const Mesh& mesh, const QualityOptions& options) {
   r.certified.assign(n, QualityMeasure::kNaN);
   const std::vector<double> angle_bins = steps(0, 180, 10);
   const std::vector<double> ratio_bins = {1, 1.25, 1.5, 2, 3, 5, 10, 100};
-  init(&r.min_det, "min_det", "min det T", "1", {}, n);
+  init(&r.min_det, "min_det", "min det T", "", {}, n);
   init(&r.mean_ratio, "mean_ratio", "mean ratio", "1", tenths(), n);
   init(&r.scaled_jacobian, "scaled_jacobian", "scaled Jacobian", "1", tenths(), n);
   init(&r.condition_number, "condition_number", "condition number", "1", ratio_bins, n);

@@ -1,0 +1,34 @@
+#include "tmop/quality/quality_fields.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <utility>
+
+namespace tmop {
+namespace {
+
+void put(const std::string& name, std::vector<double> values, Mesh* mesh) {
+  for (DataArray& a : mesh->cell_data) {
+    if (a.name == name) {
+      a.components = 1;
+      a.values = std::move(values);
+      return;
+    }
+  }
+  mesh->cell_data.push_back(DataArray{name, 1, std::move(values)});
+}
+
+}  // namespace
+
+void add_quality_fields(const QualityReport& report, Mesh* mesh) {
+  if (report.num_cells != mesh->num_cells()) {
+    std::fprintf(stderr, "tmop: add_quality_fields: report has %lld cells, mesh %d\n",
+                 static_cast<long long>(report.num_cells), mesh->num_cells());
+    std::abort();
+  }
+  put("inverted", std::vector<double>(report.inverted.begin(), report.inverted.end()), mesh);
+  put("certified", report.certified, mesh);
+  for (const QualityMeasure* m : report.measures()) put(m->key, m->values, mesh);
+}
+
+}  // namespace tmop

@@ -1,0 +1,22 @@
+// tmop/quality/quality_fields.h
+// add_quality_fields: puts the report's per-cell arrays into Mesh::cell_data (one component
+// each, one value per cell) so that .vtu / .vtk output shows them: "inverted" (0/1),
+// "certified" (1/0, NaN without certificate) and every measure under its JSON key
+// ("mean_ratio", "scaled_jacobian", "condition_number", "min_det", "min_angle_deg",
+// "max_angle_deg", "min_dihedral_deg", "max_dihedral_deg", "min_edge_length", "max_edge_length",
+// "edge_ratio"). NaN marks cells a measure does not apply to; the condition number of an inverted
+// cell is +inf. Arrays with these names already in cell_data are replaced.
+#ifndef TMOP_QUALITY_QUALITY_FIELDS_H_
+#define TMOP_QUALITY_QUALITY_FIELDS_H_
+
+#include "tmop/mesh/mesh.h"
+#include "tmop/quality/quality_report.h"
+
+namespace tmop {
+
+// report must come from compute_quality(*mesh) (same cells); CHECK-style abort otherwise.
+void add_quality_fields(const QualityReport& report, Mesh* mesh);
+
+}  // namespace tmop
+
+#endif  // TMOP_QUALITY_QUALITY_FIELDS_H_

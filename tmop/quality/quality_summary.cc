@@ -1,0 +1,63 @@
+#include "tmop/quality/quality_summary.h"
+
+#include <cinttypes>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+namespace tmop {
+namespace {
+
+void append(std::string* out, const char* format, ...) {
+  char buf[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buf, sizeof buf, format, args);
+  va_end(args);
+  *out += buf;
+}
+
+std::string g6(double v) {
+  if (std::isnan(v)) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::string quality_summary(const QualityReport& r) {
+  std::string out;
+  append(&out, "mesh: %dD elements in %dD space%s, %" PRId64 " vertices, %" PRId64 " elements",
+         r.dim, r.space_dim, r.planar ? " (planar)" : "", r.num_vertices, r.num_elements);
+  std::string types;
+  for (int t = 0; t < kNumCellTypes && r.elements_by_type.size() == kNumCellTypes; ++t) {
+    if (r.elements_by_type[t] == 0) continue;
+    append(&types, "%s%s %" PRId64, types.empty() ? "" : ", ", cell_name(static_cast<CellType>(t)),
+           r.elements_by_type[t]);
+  }
+  out += types.empty() ? "\n" : " (" + types + ")\n";
+  append(&out, "inverted: %" PRId64, r.inverted_cells);
+  if (r.certifiable_cells > 0)
+    append(&out, "   certified valid: %" PRId64 " of %" PRId64, r.certified_cells,
+           r.certifiable_cells);
+  if (r.tets > 0) append(&out, "   slivers: %" PRId64 " of %" PRId64 " tets", r.slivers, r.tets);
+  out += "\n";
+  if (r.edge_length.count > 0) {
+    append(&out, "edge length (%" PRId64 " unique edges): min %s  mean %s  max %s\n",
+           r.edge_length.count, g6(r.edge_length.min).c_str(), g6(r.edge_length.mean).c_str(),
+           g6(r.edge_length.max).c_str());
+  }
+  out += "\n";
+  append(&out, "%-20s %12s %12s %12s %8s %10s\n", "measure", "min", "mean", "max", "ideal",
+         "infinite");
+  for (const QualityMeasure* m : r.measures()) {
+    if (m->count + m->infinite == 0) continue;
+    append(&out, "%-20s %12s %12s %12s %8s %10" PRId64 "\n", m->label.c_str(), g6(m->min).c_str(),
+           g6(m->mean).c_str(), g6(m->max).c_str(), m->ideal.empty() ? "-" : m->ideal.c_str(),
+           m->infinite);
+  }
+  return out;
+}
+
+}  // namespace tmop
