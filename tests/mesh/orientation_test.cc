@@ -24,6 +24,15 @@ TEST(Orientation, PositiveMeshes) {
   EXPECT_EQ(r.mixed_or_zero, 0);
   EXPECT_FALSE(r.opposite_convention());
   EXPECT_EQ(check_orientation(QuadGrid2x2()).positive, 4);
+  EXPECT_EQ(check_orientation(testing_meshes::MixedMesh()).positive, 4);
+}
+
+TEST(Orientation, ReorientMixedMesh) {
+  Mesh m = testing_meshes::MixedMesh();
+  reorient(&m);
+  EXPECT_EQ(check_orientation(m).negative, 4);
+  reorient(&m);
+  EXPECT_EQ(check_orientation(m).positive, 4);
 }
 
 TEST(Orientation, FlippedTetMeshIsDetectedAndRepaired) {

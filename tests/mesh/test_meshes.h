@@ -76,6 +76,26 @@ inline Mesh KuhnTets(int nx, int ny, int nz) {
   return m;
 }
 
+// A hex with a pyramid on top, a tet on one pyramid face and a wedge on the hex's x = 1 face:
+// every facet kind and every pair of kinds that can share a facet.
+inline Mesh MixedMesh() {
+  Mesh m;
+  m.space_dim = 3;
+  const double p[][3] = {{0, 0, 0},       {1, 0, 0},       {1, 1, 0}, {0, 1, 0},
+                         {0, 0, 1},       {1, 0, 1},       {1, 1, 1}, {0, 1, 1},
+                         {0.5, 0.5, 1.5}, {1.5, 0.5, 1.6}, {2, 0, 0}, {2, 1, 0}};
+  for (auto& x : p) m.add_vertex(x);
+  const std::int32_t hex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+  const std::int32_t pyramid[5] = {4, 5, 6, 7, 8};
+  const std::int32_t tet[4] = {5, 6, 8, 9};
+  const std::int32_t wedge[6] = {1, 5, 10, 2, 6, 11};
+  m.add_cell(CellType::kHex8, hex);
+  m.add_cell(CellType::kPyramid5, pyramid);
+  m.add_cell(CellType::kTet4, tet);
+  m.add_cell(CellType::kWedge6, wedge);
+  return m;
+}
+
 // One cell of `type` placed by an affine map of its reference element plus a smooth bend of the
 // quadratic nodes (positive det J everywhere for small `bend`).
 inline Mesh SingleCell(CellType type, double bend) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <set>
 
 #include "tests/mesh/test_meshes.h"
@@ -13,6 +14,7 @@ namespace tmop {
 namespace {
 
 using testing_meshes::KuhnTets;
+using testing_meshes::MixedMesh;
 using testing_meshes::QuadGrid2x2;
 using testing_meshes::TwoTets;
 
@@ -43,6 +45,49 @@ void ExpectOutward(const Mesh& m, const BoundaryFacet& f) {
   for (int j = 0; j < d; ++j) dot += n[j] * (fc[j] - cc[j]);
   EXPECT_GT(dot, 0) << "cell " << f.cell << " facet " << int(f.local);
 }
+
+// Brute force with std::map / std::set, independent of topology.cc's bucketing.
+void ExpectMatchesBruteForce(const Mesh& m) {
+  std::set<std::array<std::int32_t, 2>> edges;
+  std::map<std::vector<std::int32_t>, int> facet_uses;
+  for (int c = 0; c < m.num_cells(); ++c) {
+    const CellInfo& info = cell_info(m.cell_type(c));
+    for (int e = 0; e < info.num_edges; ++e) {
+      std::int32_t a = m.cell(c)[info.edges[e][0]], b = m.cell(c)[info.edges[e][1]];
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+    for (int f = 0; f < info.num_facets; ++f) {
+      std::vector<std::int32_t> key;
+      for (int k = 0; k < info.facets[f].num_corners; ++k)
+        key.push_back(m.cell(c)[info.facets[f].corners[k]]);
+      std::sort(key.begin(), key.end());
+      ++facet_uses[key];
+    }
+  }
+  const auto got_edges = mesh_edges(m);
+  const std::vector<std::array<std::int32_t, 2>> expected_edges(edges.begin(), edges.end());
+  EXPECT_EQ(expected_edges, got_edges);
+  std::size_t singles = 0;
+  for (const auto& kv : facet_uses) singles += kv.second == 1;
+  const auto facets = boundary_facets(m);
+  EXPECT_EQ(facets.size(), singles);
+  for (const BoundaryFacet& f : facets) {
+    std::vector<std::int32_t> key(f.corners, f.corners + f.num_corners);
+    std::sort(key.begin(), key.end());
+    EXPECT_EQ(facet_uses[key], 1);
+    ExpectOutward(m, f);
+  }
+}
+
+TEST(Topology, MixedHexPyramidTetWedge) {
+  const Mesh m = MixedMesh();
+  EXPECT_EQ(boundary_facets(m).size(), 14u);  // hex 4 + pyramid 3 + tet 3 + wedge 4
+  ExpectMatchesBruteForce(m);
+  const auto mask = boundary_vertex_mask(m);
+  EXPECT_EQ(std::count(mask.begin(), mask.end(), 1), m.num_vertices());
+}
+
+TEST(Topology, MatchesBruteForceOnKuhnGrid) { ExpectMatchesBruteForce(KuhnTets(4, 3, 2)); }
 
 TEST(Topology, TwoTetsSharingAFace) {
   const Mesh m = TwoTets();

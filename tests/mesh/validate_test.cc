@@ -18,6 +18,7 @@ TEST(Validate, AcceptsGoodMeshes) {
   EXPECT_TRUE(validate_mesh(TwoTets()).ok());
   EXPECT_TRUE(validate_mesh(KuhnTets(3, 3, 3)).ok());
   EXPECT_TRUE(validate_mesh(testing_meshes::QuadGrid2x2()).ok());
+  EXPECT_TRUE(validate_mesh(testing_meshes::MixedMesh()).ok());
 }
 
 TEST(Validate, NonFiniteCoordinate) {
