@@ -33,15 +33,20 @@ bool have_program(const std::string& name);
 bool have_python_module(const std::string& module);
 
 // The canonical dump (see mesh_dump.py): points, then cells as "type region nodes...". The
-// dump's node order (gmsh or vtk) is converted to Gmsh order. Cells are kept in dump order.
+// dump's node order (gmsh, or meshio's) is converted to Gmsh order with tmop's tables, so
+// comparing a meshio dump with tmop's reading checks those tables against meshio's.
 struct Dump {
   std::vector<double> xyz;         // 3 per point
   std::vector<std::string> cells;  // "type region n0 n1 ..." in Gmsh order, 0-based
 };
 bool parse_dump(const std::string& text, Dump* dump, std::string* error);
+bool parse_dump_file(const std::string& path, Dump* dump, std::string* error);
 Dump dump_of(const Mesh& mesh);  // the same canonical form from a tmop Mesh
 // Empty when equal; cells compared as sorted lists (readers may regroup cells by type).
-std::string diff_dumps(const Dump& a, const Dump& b);
+// Coordinates equal within rel_tol * max(1, |x|) (0: bit-exact).
+std::string diff_dumps(const Dump& a, const Dump& b, double rel_tol = 0.0);
+// Sets every cell's region to 0 (for files that do not carry regions for all cells).
+void strip_regions(Dump* d);
 
 std::string python_helper();  // path of mesh_dump.py
 

@@ -1,0 +1,160 @@
+#!/usr/bin/python3
+"""Independent readers / writers for tmop's io tests (run with /usr/bin/python3).
+
+  mesh_dump.py gmsh FILE...       dump each FILE as read by the Gmsh API (gmsh.open) into
+                                  FILE.gmsh.dump
+  mesh_dump.py meshio FILE...     dump each FILE as read by meshio into FILE.meshio.dump
+  mesh_dump.py meshio-write DIR   write test meshes with meshio in every format into DIR, each
+                                  with a NAME.expected dump of what was written
+
+The canonical dump (parsed by io_test_util.cc):
+  order gmsh|meshio     node order of the cells below (meshio's own order is VTK's except for
+                        wedges, which it keeps in Gmsh order)
+  points N              then N lines "x y z" (repr: shortest exact form)
+  cells M               then M lines "TYPE REGION n0 n1 ..." (tmop type names, 0-based nodes)
+REGION is the Gmsh physical tag (first physical group of the element's entity) or, for meshio,
+the cell data "gmsh:physical" / "medit:ref"; 0 when there is none.
+"""
+import sys
+
+GMSH_TYPES = {15: "vertex", 1: "line2", 8: "line3", 2: "tri3", 3: "quad4", 4: "tet4",
+              5: "hex8", 6: "wedge6", 7: "pyramid5", 9: "tri6", 10: "quad9", 11: "tet10",
+              12: "hex27"}
+MESHIO_TYPES = {"vertex": "vertex", "line": "line2", "line3": "line3", "triangle": "tri3",
+                "quad": "quad4", "tetra": "tet4", "hexahedron": "hex8", "wedge": "wedge6",
+                "pyramid": "pyramid5", "triangle6": "tri6", "quad9": "quad9",
+                "tetra10": "tet10", "hexahedron27": "hex27"}
+
+
+def emit(order, points, cells, path):
+    out = ["order " + order, "points %d" % len(points)]
+    for p in points:
+        xyz = [float(x) for x in p] + [0.0] * (3 - len(p))
+        out.append(" ".join(repr(x) for x in xyz))
+    out.append("cells %d" % len(cells))
+    for name, region, nodes in cells:
+        out.append("%s %d %s" % (name, region, " ".join(str(int(n)) for n in nodes)))
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+def dump_gmsh(path):
+    import gmsh
+    gmsh.clear()
+    gmsh.open(path)
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    order = sorted(range(len(tags)), key=lambda i: tags[i])
+    index = {int(tags[i]): k for k, i in enumerate(order)}
+    points = [coords[3 * i:3 * i + 3] for i in order]
+    elems = []
+    for dim, tag in gmsh.model.getEntities():
+        phys = gmsh.model.getPhysicalGroupsForEntity(dim, tag)
+        region = int(phys[0]) if len(phys) else 0
+        types, etags, enodes = gmsh.model.mesh.getElements(dim, tag)
+        for t, et, en in zip(types, etags, enodes):
+            n = len(en) // len(et)
+            for k, e in enumerate(et):
+                elems.append((int(e), GMSH_TYPES[int(t)], region,
+                              [index[int(x)] for x in en[k * n:(k + 1) * n]]))
+    elems.sort(key=lambda e: e[0])
+    emit("gmsh", points, [e[1:] for e in elems], path + ".gmsh.dump")
+
+
+def meshio_cells(mesh):
+    cells = []
+    for i, block in enumerate(mesh.cells):
+        region = None
+        for key in ("gmsh:physical", "medit:ref", "CellEntityIds"):
+            if key in mesh.cell_data:
+                region = mesh.cell_data[key][i]
+                break
+        for k, nodes in enumerate(block.data):
+            cells.append((MESHIO_TYPES[block.type], int(region[k]) if region is not None else 0,
+                          nodes))
+    return cells
+
+
+def dump_meshio(path):
+    import meshio
+    mesh = meshio.read(path)
+    emit("meshio", mesh.points, meshio_cells(mesh), path + ".meshio.dump")
+
+
+def sample(types, with_quadratic):
+    """Points with awkward doubles and one or two cells of each meshio type, tagged per block."""
+    import math
+    import numpy as np
+    points = np.array([[math.sin(1.0 + v) * 1e3 / 7.0, math.cos(0.5 * v) / 3.0,
+                        math.sqrt(2.0 + v) * 1e-5] for v in range(60)])
+    sizes = {"line": 2, "line3": 3, "triangle": 3, "quad": 4, "tetra": 4, "hexahedron": 8,
+             "wedge": 6, "pyramid": 5, "triangle6": 6, "quad9": 9, "tetra10": 10,
+             "hexahedron27": 27}
+    cells, phys, geom = [], [], []
+    nxt = 0
+    for b, t in enumerate(types):
+        rows = []
+        for r in range(2):
+            rows.append([(nxt + 7 * k) % 60 for k in range(sizes[t])])
+            nxt += 5
+        cells.append((t, np.array(rows)))
+        phys.append(np.array([10 + b, 10 + b], dtype=int))
+        geom.append(np.array([100 + b, 100 + b], dtype=int))
+    return points, cells, phys, geom
+
+
+def meshio_write(outdir):
+    import os
+    import meshio
+    import numpy as np
+    volume = ["tetra", "hexahedron", "wedge", "pyramid", "triangle", "quad", "line",
+              "tetra10", "hexahedron27", "triangle6", "quad9", "line3"]
+    points, cells, phys, geom = sample(volume, True)
+    full = meshio.Mesh(points, cells, cell_data={"gmsh:physical": phys, "gmsh:geometrical": geom})
+    # meshio's 4.1 writer needs the entity of every node; put them all on volume 100.
+    full41 = meshio.Mesh(points, cells, cell_data={"gmsh:physical": phys, "gmsh:geometrical": geom},
+                         point_data={"gmsh:dim_tags": np.array([[3, 100]] * len(points))})
+    jobs = [
+        ("ascii.vtu", lambda p: meshio.vtu.write(p, full, binary=False)),
+        ("zlib.vtu", lambda p: meshio.vtu.write(p, full, binary=True, compression="zlib")),
+        ("raw.vtu", lambda p: meshio.vtu.write(p, full, binary=True, compression=None)),
+        ("ascii.vtk", lambda p: meshio.vtk.write(p, full, binary=False)),
+        ("binary.vtk", lambda p: meshio.vtk.write(p, full, binary=True)),
+        ("ascii42.vtk", lambda p: meshio.vtk.write(p, full, binary=False, fmt_version="4.2")),
+        ("binary42.vtk", lambda p: meshio.vtk.write(p, full, binary=True, fmt_version="4.2")),
+        ("ascii22.msh", lambda p: meshio.gmsh.write(p, full, fmt_version="2.2", binary=False)),
+        ("binary22.msh", lambda p: meshio.gmsh.write(p, full, fmt_version="2.2", binary=True)),
+        ("ascii41.msh", lambda p: meshio.gmsh.write(p, full41, fmt_version="4.1", binary=False)),
+        ("binary41.msh", lambda p: meshio.gmsh.write(p, full41, fmt_version="4.1", binary=True)),
+    ]
+    medit_types = ["tetra", "hexahedron", "wedge", "pyramid", "triangle", "quad", "line"]
+    mp, mc, mphys, _ = sample(medit_types, False)
+    medit = meshio.Mesh(mp, mc, cell_data={"medit:ref": mphys})
+    jobs.append(("medit.mesh", lambda p: meshio.medit.write(p, medit)))
+    for name, write in jobs:
+        path = outdir + "/" + name
+        try:
+            write(path)
+        except Exception as e:  # report, keep going: the C++ test names the missing file
+            sys.stderr.write("meshio could not write %s: %s\n" % (name, e))
+            if os.path.exists(path):
+                os.remove(path)
+            continue
+        mesh = medit if name.endswith(".mesh") else full
+        emit("meshio", mesh.points, meshio_cells(mesh), path + ".expected")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 3 or sys.argv[1] not in ("gmsh", "meshio", "meshio-write"):
+        sys.exit(__doc__)
+    if sys.argv[1] == "meshio-write":
+        meshio_write(sys.argv[2])
+    elif sys.argv[1] == "meshio":
+        for f in sys.argv[2:]:
+            dump_meshio(f)
+    else:
+        import gmsh
+        gmsh.initialize()
+        gmsh.option.setNumber("General.Terminal", 0)
+        for f in sys.argv[2:]:
+            dump_gmsh(f)
+        gmsh.finalize()
