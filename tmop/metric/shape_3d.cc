@@ -20,10 +20,12 @@ double nan_or_inf(double tau) {
 
 class PolarShapeMetric final : public FixedMetric {
  public:
-  PolarShapeMetric(Shape3dForm form, const char* name, const char* alias, double c2)
+  PolarShapeMetric(Shape3dForm form, const char* name, const char* alias, double c2,
+                   bool rotation_fixed)
       : FixedMetric(name, alias, 3, MetricClass::kShape, true, 9, false),
         form_(form),
-        c_(std::sqrt(c2)) {}
+        c_(std::sqrt(c2)),
+        rotation_fixed_(rotation_fixed) {}
 
   double value(const double* T) const override {
     double C[9];
@@ -61,12 +63,29 @@ class PolarShapeMetric final : public FixedMetric {
       if (!std::isfinite(r[n])) return false;
     }
     if (dr_dT != nullptr) {
-      // c a (I - vec(T) vec(T^-t)^t / 3), T^-t = C / tau.
-      const double b = -ca / (3.0 * tau);
+      // dS/dT = a (I - vec(T) vec(T^-t)^t / 3), T^-t = C / tau. With R held fixed dr/dT = c dS/dT;
+      // the exact Jacobian is c (I - L) dS/dT with L = dR/dS.
+      const double b = 1.0 / (3.0 * tau);
+      if (rotation_fixed_) {
+        for (int n = 0; n < 9; ++n) {
+          double* row = dr_dT + 9 * n;
+          const double bt = -ca * b * T[n];
+          for (int m = 0; m < 9; ++m) row[m] = bt * C[m];
+          row[n] += ca;
+        }
+        return true;
+      }
+      double S[9], L[81];
+      for (int n = 0; n < 9; ++n) S[n] = a * T[n];
+      small_matrix::polar_rotation_derivative_3(S, R, L);
+      // (I - L)(I - t g^t / 3) = (I - L) - ((I - L) t) g^t / 3.
       for (int n = 0; n < 9; ++n) {
         double* row = dr_dT + 9 * n;
-        const double bt = b * T[n];
-        for (int m = 0; m < 9; ++m) row[m] = bt * C[m];
+        const double* l = L + 9 * n;
+        double v = T[n];
+        for (int m = 0; m < 9; ++m) v -= l[m] * T[m];
+        const double bv = -ca * b * v;
+        for (int m = 0; m < 9; ++m) row[m] = bv * C[m] - ca * l[m];
         row[n] += ca;
       }
     }
@@ -76,6 +95,7 @@ class PolarShapeMetric final : public FixedMetric {
  private:
   Shape3dForm form_;
   double c_;
+  bool rotation_fixed_;
 };
 
 class ConformalShapeMetric final : public FixedMetric {
@@ -123,19 +143,22 @@ class ConformalShapeMetric final : public FixedMetric {
 
 }  // namespace
 
-std::unique_ptr<Metric> make_shape_3d_metric(Shape3dForm form) {
+std::unique_ptr<Metric> make_shape_3d_metric(Shape3dForm form, bool rotation_fixed_jacobian) {
   switch (form) {
     case Shape3dForm::kNonBarrier:
       return std::make_unique<ConformalShapeMetric>();
     case Shape3dForm::kBarrier:
-      return std::make_unique<PolarShapeMetric>(form, "shape_barrier_3d", "mu_303", 2.0 / 3.0);
+      return std::make_unique<PolarShapeMetric>(form, "shape_barrier_3d", "mu_303", 2.0 / 3.0,
+                                                rotation_fixed_jacobian);
     case Shape3dForm::kCubicBarrier:
-      return std::make_unique<PolarShapeMetric>(form, "shape_cubic_barrier_3d", "mu_304", 1.0);
+      return std::make_unique<PolarShapeMetric>(form, "shape_cubic_barrier_3d", "mu_304", 1.0,
+                                                rotation_fixed_jacobian);
     case Shape3dForm::kConditionBarrier:
-      return std::make_unique<PolarShapeMetric>(form, "condition_barrier_3d", "mu_301", 2.0 / 3.0);
+      return std::make_unique<PolarShapeMetric>(form, "condition_barrier_3d", "mu_301", 2.0 / 3.0,
+                                                rotation_fixed_jacobian);
     case Shape3dForm::kConditionSquaredBarrier:
       return std::make_unique<PolarShapeMetric>(form, "condition_squared_barrier_3d", "mu_302",
-                                                4.0 / 3.0);
+                                                4.0 / 3.0, rotation_fixed_jacobian);
   }
   return nullptr;
 }

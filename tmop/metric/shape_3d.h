@@ -19,10 +19,16 @@
 //     so |S|^2 = |S^-1|^2 = 3 + 2|d|^2 + O(d^3); hence mu_303 ~ mu_301 ~ (2/3)|d|^2,
 //     mu_304 ~ |d|^2, mu_302 ~ (4/3)|d|^2 and c^2 |S - R|^2 matches mu to second order at the
 //     minimiser (same Hessian, so the same local Gauss-Newton model).
-//   * The Jacobian holds R fixed: dr/dT = c tau^(-1/3) (I - vec(T) vec(T^-t)^t / 3). Because
-//     R minimises |S - Q|^2 over rotations Q, the variation of R does not change |r|^2 to first
-//     order (R^t (S - R) = P - I is symmetric, dR = R W with W skew), so J^t r is the exact
-//     gradient of |r|^2 / 2 as a function of T.
+//   * Jacobian: dr/dT = c (I - L) dS/dT with dS/dT = tau^(-1/3) (I - vec(T) vec(T^-t)^t / 3)
+//     and L = dR/dS the exact derivative of the polar rotation (small_matrix.h), so J is the
+//     exact Jacobian of r and J^t J is the exact Gauss-Newton model (at the minimiser it equals
+//     the Hessian of |r|^2 / 2: no stiffness against rotating an element, which is free).
+//     Because R minimises |S - Q|^2 over rotations Q, R^t (S - R) = P - I is symmetric while
+//     dR = R W with W skew, so (c dR)^t r = 0: J^t r equals the gradient of |r|^2 / 2 computed
+//     with R held fixed, c^2 (dS/dT)^t vec(S - R).
+//   * make_shape_3d_metric(form, true) gives the cheaper rotation-fixed Jacobian c dS/dT instead:
+//     the same gradient J^t r, but J^t J adds stiffness c^2 tau^(-2/3) |W T|^2 along the
+//     rotations dT = W T of the element.
 //   R comes from a scaled Newton polar iteration (small_matrix.h), no SVD.
 //
 // Non-barrier metric, defined for every T (inverted ones included):
@@ -51,7 +57,9 @@ enum class Shape3dForm {
   kConditionSquaredBarrier,  // condition_squared_barrier_3d, mu_302
 };
 
-std::unique_ptr<Metric> make_shape_3d_metric(Shape3dForm form);
+// rotation_fixed_jacobian: see above (barrier forms only; the registry uses false).
+std::unique_ptr<Metric> make_shape_3d_metric(Shape3dForm form,
+                                             bool rotation_fixed_jacobian = false);
 
 }  // namespace tmop
 

@@ -1,7 +1,8 @@
 // tmop/metric/small_matrix.h
 // Closed-form kernels on row-major D x D matrices (D = 2 or 3) for the per-sample-point metric
-// code: determinant, cofactor matrix, Frobenius norm, the second derivative of the determinant
-// and the rotation factor of the polar decomposition. Plain arrays, no allocation, inline.
+// code: determinant, cofactor matrix, Frobenius norm, the second derivative of the determinant,
+// the rotation factor of the polar decomposition and its derivative. Plain arrays, no
+// allocation, inline.
 //
 // cof(T) is the matrix of cofactors, cof(T) = det(T) T^-T = d det(T) / dT; it exists for every
 // T, so metrics use it instead of the inverse until they know det T != 0.
@@ -116,6 +117,56 @@ inline bool polar_rotation_3(const double* T, double* R) {
   }
   for (int n = 0; n < 9; ++n) R[n] = X[n];
   return true;
+}
+
+// L = dR/dS for the polar decomposition S = R P (3x3, det S > 0), as a 9 x 9 row-major matrix
+// acting on vec(dS). Derivation: dS = dR P + R dP with dR = R W, W skew; the skew part of
+// R^t dS is W P + P W = [ (tr(P) I - P) w ]x for W = [w]x. So w = K m with
+// K = (tr(P) I - P)^-1 (positive definite: its eigenvalues are sums of two eigenvalues of P) and
+// m = axial(R^t dS - dS^t R) = A vec(dS); dR = R [w]x = A^t w. Hence L = A^t K A (symmetric,
+// rank 3), with A_{l,(k,l+1)} = R_{k,l+2}, A_{l,(k,l+2)} = -R_{k,l+1} (indices mod 3).
+// R must be the rotation factor of S (polar_rotation_3).
+inline void polar_rotation_derivative_3(const double* S, const double* R, double* L) {
+  // P = R^t S (symmetric up to round-off; symmetrised).
+  double P[9];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      double s = 0.0;
+      for (int k = 0; k < 3; ++k) s += R[3 * k + i] * S[3 * k + j];
+      P[3 * i + j] = s;
+    }
+  }
+  const double tr = P[0] + P[4] + P[8];
+  double Q[9], K[9];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) Q[3 * i + j] = -0.5 * (P[3 * i + j] + P[3 * j + i]);
+    Q[4 * i] += tr;
+  }
+  cofactor<3>(Q, K);  // Q symmetric: Q^-1 = cof(Q) / det(Q)
+  const double inv_det = 1.0 / det_from_cofactor<3>(Q, K);
+  for (int n = 0; n < 9; ++n) K[n] *= inv_det;
+  double A[27];
+  for (int n = 0; n < 27; ++n) A[n] = 0.0;
+  for (int l = 0; l < 3; ++l) {
+    const int l1 = (l + 1) % 3, l2 = (l + 2) % 3;
+    for (int k = 0; k < 3; ++k) {
+      A[9 * l + 3 * k + l1] = R[3 * k + l2];
+      A[9 * l + 3 * k + l2] = -R[3 * k + l1];
+    }
+  }
+  double KA[27];
+  for (int i = 0; i < 3; ++i) {
+    for (int n = 0; n < 9; ++n) {
+      KA[9 * i + n] = K[3 * i] * A[n] + K[3 * i + 1] * A[9 + n] + K[3 * i + 2] * A[18 + n];
+    }
+  }
+  for (int p = 0; p < 9; ++p) {
+    for (int q = p; q < 9; ++q) {
+      const double v = A[p] * KA[q] + A[9 + p] * KA[9 + q] + A[18 + p] * KA[18 + q];
+      L[9 * p + q] = v;
+      L[9 * q + p] = v;
+    }
+  }
 }
 
 }  // namespace small_matrix

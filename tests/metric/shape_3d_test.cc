@@ -1,0 +1,194 @@
+// tests/metric/shape_3d_test.cc
+// The 3D polar shape residuals r = c vec(S - R): the polar rotation and its derivative, the
+// rotation-fixed Jacobian, J^t r against the gradient with R held fixed, and the Gauss-Newton
+// model along element rotations. Also the small-matrix kernels they rely on.
+#include "tmop/metric/shape_3d.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/metric/metric_test_util.h"
+#include "tmop/metric/small_matrix.h"
+
+namespace tmop {
+namespace {
+
+using metric_test::central_jacobian;
+using metric_test::eval;
+using metric_test::Mat;
+using metric_test::random_matrix;
+using metric_test::random_rotation;
+using metric_test::scaled_error;
+using Vec9 = Eigen::Matrix<double, 9, 1>;
+
+struct PolarForm {
+  Shape3dForm form;
+  double c2;  // r = sqrt(c2) vec(S - R)
+};
+const PolarForm kPolarForms[] = {{Shape3dForm::kBarrier, 2.0 / 3.0},
+                                 {Shape3dForm::kCubicBarrier, 1.0},
+                                 {Shape3dForm::kConditionBarrier, 2.0 / 3.0},
+                                 {Shape3dForm::kConditionSquaredBarrier, 4.0 / 3.0}};
+
+Mat polar_rotation(const Mat& T) {
+  Mat R(3, 3);
+  EXPECT_TRUE(small_matrix::polar_rotation_3(T.data(), R.data()));
+  return R;
+}
+
+TEST(SmallMatrix, DeterminantAndCofactorMatchEigen) {
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 20; ++trial) {
+    for (int d = 2; d <= 3; ++d) {
+      const Mat T = Mat::Random(d, d);
+      Mat C(d, d);
+      double det;
+      if (d == 2) {
+        small_matrix::cofactor<2>(T.data(), C.data());
+        det = small_matrix::det<2>(T.data());
+      } else {
+        small_matrix::cofactor<3>(T.data(), C.data());
+        det = small_matrix::det<3>(T.data());
+      }
+      EXPECT_NEAR(det, T.determinant(), 1e-14);
+      EXPECT_LT((C - det * Mat(T.inverse().transpose())).norm(), 1e-12);
+    }
+  }
+}
+
+TEST(SmallMatrix, CofactorDerivativeMatchesCentralDifferences) {
+  const Mat T = Mat::Random(3, 3);
+  Mat H(9, 9);
+  small_matrix::cofactor_derivative_3(T.data(), H.data());
+  const Mat Hn = central_jacobian(
+      [](const Mat& X) {
+        Vec9 c;
+        small_matrix::cofactor<3>(X.data(), c.data());
+        return Eigen::VectorXd(c);
+      },
+      T, 9);
+  EXPECT_LT(scaled_error(H, Hn), 1e-8);
+}
+
+TEST(SmallMatrix, PolarRotationMatchesSvdUpToIllConditioning) {
+  std::mt19937 rng(11);
+  for (double cond : {1.0, 10.0, 1e3, 1e6}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      const Mat T = random_matrix(3, rng, false, 1.0, cond);
+      const Mat R = polar_rotation(T);
+      Eigen::JacobiSVD<Mat> svd(T, Eigen::ComputeFullU | Eigen::ComputeFullV);
+      const Mat expected = svd.matrixU() * svd.matrixV().transpose();
+      EXPECT_LT((R - expected).norm(), 1e-12 * cond) << "cond " << cond;
+      EXPECT_LT((R.transpose() * R - Mat::Identity(3, 3)).norm(), 1e-14);
+      const Mat P = R.transpose() * T;
+      EXPECT_LT((P - P.transpose()).norm(), 1e-12 * P.norm());
+    }
+  }
+  Mat inverted = Mat::Identity(3, 3);
+  inverted(2, 2) = -1.0;
+  double R[9];
+  EXPECT_FALSE(small_matrix::polar_rotation_3(inverted.data(), R));
+}
+
+TEST(SmallMatrix, PolarRotationDerivativeMatchesCentralDifferences) {
+  std::mt19937 rng(12);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Mat S = random_matrix(3, rng, false, 0.2, 5.0);
+    const Mat R = polar_rotation(S);
+    Mat L(9, 9);
+    small_matrix::polar_rotation_derivative_3(S.data(), R.data(), L.data());
+    const Mat Ln = central_jacobian(
+        [](const Mat& X) {
+          const Mat RX = polar_rotation(X);
+          return Eigen::VectorXd(Eigen::Map<const Vec9>(RX.data()));
+        },
+        S, 9);
+    EXPECT_LT(scaled_error(L, Ln), 1e-7);
+  }
+}
+
+TEST(PolarShape, RotationFixedJacobianMatchesDifferencesWithRFixed) {
+  std::mt19937 rng(13);
+  for (const PolarForm& f : kPolarForms) {
+    std::unique_ptr<Metric> m = make_shape_3d_metric(f.form, /*rotation_fixed_jacobian=*/true);
+    const double c = std::sqrt(f.c2);
+    for (int trial = 0; trial < 20; ++trial) {
+      const Mat T = random_matrix(3, rng);
+      const Mat R = polar_rotation(T);
+      Eigen::VectorXd r;
+      Mat J;
+      ASSERT_TRUE(eval(*m, T, &r, &J));
+      // r_R(X) = c (X det(X)^(-1/3) - R) with R the rotation of T, frozen.
+      auto fixed = [&](const Mat& X) -> Eigen::VectorXd {
+        return c * (Eigen::Map<const Vec9>(X.data()) / std::cbrt(X.determinant()) -
+                    Eigen::Map<const Vec9>(R.data()));
+      };
+      EXPECT_LT((fixed(T) - r).cwiseAbs().maxCoeff(), 1e-12) << m->name();
+      EXPECT_LT(scaled_error(J, central_jacobian(fixed, T, 9)), 1e-6) << m->name();
+    }
+  }
+}
+
+TEST(PolarShape, JtRIsTheGradientWithRotationHeldFixed) {
+  std::mt19937 rng(14);
+  for (const PolarForm& f : kPolarForms) {
+    for (bool rotation_fixed : {false, true}) {
+      std::unique_ptr<Metric> m = make_shape_3d_metric(f.form, rotation_fixed);
+      const double c = std::sqrt(f.c2);
+      for (int trial = 0; trial < 20; ++trial) {
+        const Mat T = random_matrix(3, rng, false, 0.2, 5.0);
+        const Mat R = polar_rotation(T);
+        Eigen::VectorXd r;
+        Mat J;
+        ASSERT_TRUE(eval(*m, T, &r, &J));
+        auto half_squared = [&](const Mat& X) -> Eigen::VectorXd {
+          const Vec9 rx = c * (Eigen::Map<const Vec9>(X.data()) / std::cbrt(X.determinant()) -
+                               Eigen::Map<const Vec9>(R.data()));
+          return Eigen::VectorXd::Constant(1, 0.5 * rx.squaredNorm());
+        };
+        const Mat g = (J.transpose() * r).transpose();
+        EXPECT_LT(scaled_error(g, central_jacobian(half_squared, T, 1)), 1e-6) << m->name();
+      }
+    }
+  }
+}
+
+TEST(PolarShape, ExactJacobianHasNoStiffnessAlongRotationsAtTheMinimum) {
+  std::mt19937 rng(15);
+  for (const PolarForm& f : kPolarForms) {
+    std::unique_ptr<Metric> exact = make_shape_3d_metric(f.form, false);
+    std::unique_ptr<Metric> fixed = make_shape_3d_metric(f.form, true);
+    const Mat T = 1.7 * random_rotation(3, rng);  // a minimiser
+    Mat W = Mat::Random(3, 3);
+    W = W - Mat(W.transpose());  // skew: dT = W T rotates the element
+    const Mat dT = W * T;
+    const Eigen::Map<const Vec9> dt(dT.data());
+    Eigen::VectorXd r;
+    Mat J;
+    ASSERT_TRUE(eval(*exact, T, &r, &J));
+    EXPECT_LT((J * dt).norm(), 1e-12 * dt.norm()) << exact->name();
+    ASSERT_TRUE(eval(*fixed, T, &r, &J));
+    EXPECT_GT((J * dt).norm(), 0.1 * dt.norm()) << fixed->name();
+  }
+}
+
+TEST(PolarShape, MinimisersAgreeWithThePublishedMetric) {
+  std::mt19937 rng(16);
+  for (const PolarForm& f : kPolarForms) {
+    std::unique_ptr<Metric> m = make_shape_3d_metric(f.form);
+    for (int trial = 0; trial < 20; ++trial) {
+      // On s R both vanish; off it both are positive.
+      const Mat on = std::exp(trial / 5.0 - 2.0) * random_rotation(3, rng);
+      Eigen::VectorXd r;
+      ASSERT_TRUE(eval(*m, on, &r, nullptr));
+      EXPECT_LT(r.norm(), 1e-10);
+      EXPECT_NEAR(m->value(on.data()), 0.0, 1e-12);
+      const Mat off = random_matrix(3, rng);
+      ASSERT_TRUE(eval(*m, off, &r, nullptr));
+      EXPECT_GT(r.norm(), 1e-6);
+      EXPECT_GT(m->value(off.data()), 1e-10);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tmop
