@@ -54,12 +54,13 @@ class PolarShapeMetric final : public FixedMetric {
     small_matrix::cofactor<3>(T, C);
     const double tau = small_matrix::det_from_cofactor<3>(T, C);
     if (!(tau > 0.0) || !std::isfinite(tau)) return false;
-    double R[9];
-    if (!small_matrix::polar_rotation_3(T, R)) return false;
-    const double a = 1.0 / std::cbrt(tau);  // S = a T
+    const double a = 1.0 / std::cbrt(tau);
+    double S[9], R[9];
+    for (int n = 0; n < 9; ++n) S[n] = a * T[n];
+    if (!small_matrix::polar_rotation_unit_det_3(S, R)) return false;
     const double ca = c_ * a;
     for (int n = 0; n < 9; ++n) {
-      r[n] = ca * T[n] - c_ * R[n];
+      r[n] = c_ * (S[n] - R[n]);
       if (!std::isfinite(r[n])) return false;
     }
     if (dr_dT != nullptr) {
@@ -75,17 +76,16 @@ class PolarShapeMetric final : public FixedMetric {
         }
         return true;
       }
-      double S[9], L[81];
-      for (int n = 0; n < 9; ++n) S[n] = a * T[n];
+      double L[81];
       small_matrix::polar_rotation_derivative_3(S, R, L);
-      // (I - L)(I - t g^t / 3) = (I - L) - ((I - L) t) g^t / 3.
+      // (I - L)(I - t g^t / 3) = I - L - t g^t / 3, since L t = 0: A t = axial(R^t T - T^t R)
+      // vanishes because R^t T = P / a is symmetric.
+      const double cb = -ca * b;
       for (int n = 0; n < 9; ++n) {
         double* row = dr_dT + 9 * n;
         const double* l = L + 9 * n;
-        double v = T[n];
-        for (int m = 0; m < 9; ++m) v -= l[m] * T[m];
-        const double bv = -ca * b * v;
-        for (int m = 0; m < 9; ++m) row[m] = bv * C[m] - ca * l[m];
+        const double bt = cb * T[n];
+        for (int m = 0; m < 9; ++m) row[m] = bt * C[m] - ca * l[m];
         row[n] += ca;
       }
     }

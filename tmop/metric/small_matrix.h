@@ -89,23 +89,24 @@ inline void cofactor_derivative_3(const double* T, double* H) {
   }
 }
 
-// R = the rotation factor of the polar decomposition T = R P (P symmetric positive definite),
-// for 3x3 T with det T > 0. Newton iteration X <- (g X + X^-T / g) / 2 (Higham 1986) with the
-// Frobenius-norm scaling g = sqrt(|X^-1| / |X|) while far from convergence (update > 1e-2), then
-// unscaled: quadratic convergence, 4-6 iterations for the condition numbers seen in meshes, no
-// SVD. Stops when the update is below 1e-8 (the error left is then ~1e-16). Returns false when
-// det T <= 0 or T is not finite.
-inline bool polar_rotation_3(const double* T, double* R) {
+// R = the rotation factor of the polar decomposition S = R P (P symmetric positive definite) of
+// a 3x3 S with det S > 0, fastest when det S is close to 1 (pass T det(T)^(-1/3); the metrics
+// have it anyway). Newton iteration X <- (g X + X^-T / g) / 2 (Higham 1986): unscaled (g = 1)
+// while the update is below 1 in norm, with the Frobenius-norm scaling g = sqrt(|X^-1| / |X|)
+// above, which keeps ill-conditioned S (condition 1e6) to about 7 iterations; 4-6 iterations for
+// the elements seen in meshes; no SVD. Stops when the update is below 1e-8 (quadratic
+// convergence leaves an error ~1e-16). Returns false when det S <= 0 or S is not finite.
+inline bool polar_rotation_unit_det_3(const double* S, double* R) {
   double X[9], C[9];
-  for (int n = 0; n < 9; ++n) X[n] = T[n];
-  double delta2 = 1.0;
-  for (int iter = 0; iter < 60; ++iter) {
+  for (int n = 0; n < 9; ++n) X[n] = S[n];
+  double delta2 = 0.0;
+  for (int iter = 0; iter < 100; ++iter) {
     cofactor<3>(X, C);
     const double tau = det_from_cofactor<3>(X, C);
     if (!(tau > 0.0) || !std::isfinite(tau)) return false;
     // X^-T = C / tau, so |X^-1| / |X| = sqrt(|C|^2 / |X|^2) / tau.
     const double g =
-        delta2 > 1e-4 ? std::sqrt(std::sqrt(frobenius2<3>(C) / frobenius2<3>(X)) / tau) : 1.0;
+        delta2 > 1.0 ? std::sqrt(std::sqrt(frobenius2<3>(C) / frobenius2<3>(X)) / tau) : 1.0;
     const double a = 0.5 * g, b = 0.5 / (g * tau);
     delta2 = 0.0;
     for (int n = 0; n < 9; ++n) {
@@ -117,6 +118,16 @@ inline bool polar_rotation_3(const double* T, double* R) {
   }
   for (int n = 0; n < 9; ++n) R[n] = X[n];
   return true;
+}
+
+// The polar rotation of any 3x3 T with det T > 0 (normalises the determinant first).
+inline bool polar_rotation_3(const double* T, double* R) {
+  const double tau = det<3>(T);
+  if (!(tau > 0.0) || !std::isfinite(tau)) return false;
+  const double a = 1.0 / std::cbrt(tau);
+  double S[9];
+  for (int n = 0; n < 9; ++n) S[n] = a * T[n];
+  return polar_rotation_unit_det_3(S, R);
 }
 
 // L = dR/dS for the polar decomposition S = R P (3x3, det S > 0), as a 9 x 9 row-major matrix
