@@ -28,7 +28,8 @@ struct TMeasures {
   double mean_ratio;  // d det^(2/d) / |T|^2 with the sign of det
 };
 
-TMeasures measure_t(const Eigen::Matrix2d& t) {
+// with_mean_ratio: only the quadratic simplices need the pointwise mean ratio (a cbrt in 3D).
+TMeasures measure_t(const Eigen::Matrix2d& t, bool with_mean_ratio) {
   TMeasures m;
   m.det = t.determinant();
   const double f2 = t.squaredNorm();
@@ -36,11 +37,11 @@ TMeasures measure_t(const Eigen::Matrix2d& t) {
   // Both are bounded (AM-GM on the singular values); clamping removes round-off past the bound,
   // which would otherwise push ideal cells out of the top histogram bin.
   m.cond = m.det > 0 ? std::max(1.0, f2 / (2 * m.det)) : kInf;
-  m.mean_ratio = f2 > 0 ? std::min(1.0, 2 * m.det / f2) : 0;
+  m.mean_ratio = with_mean_ratio && f2 > 0 ? std::min(1.0, 2 * m.det / f2) : 0;
   return m;
 }
 
-TMeasures measure_t(const Eigen::Matrix3d& t) {
+TMeasures measure_t(const Eigen::Matrix3d& t, bool with_mean_ratio) {
   // The rows of adj(T) are the cross products of T's columns: no division before the sign test.
   const Vec3 c0 = t.col(1).cross(t.col(2));
   const Vec3 c1 = t.col(2).cross(t.col(0));
@@ -50,8 +51,9 @@ TMeasures measure_t(const Eigen::Matrix3d& t) {
   const double f2 = t.squaredNorm();
   const double a2 = c0.squaredNorm() + c1.squaredNorm() + c2.squaredNorm();
   m.cond = m.det > 0 ? std::max(1.0, std::sqrt(f2 * a2) / (3 * m.det)) : kInf;
-  m.mean_ratio =
-      f2 > 0 ? std::min(1.0, 3 * std::copysign(std::cbrt(m.det * m.det), m.det) / f2) : 0;
+  m.mean_ratio = with_mean_ratio && f2 > 0
+                     ? std::min(1.0, 3 * std::copysign(std::cbrt(m.det * m.det), m.det) / f2)
+                     : 0;
   return m;
 }
 
@@ -82,16 +84,25 @@ void tet_dihedral_angles(const double* nodes, CellQuality* q) {
     normal[f] =
         (node(nodes, facets[f].corners[1]) - a).cross(node(nodes, facets[f].corners[2]) - a);
   }
-  double lo = kInf, hi = -kInf;
+  // The interior angle rises with n1.n2 / (|n1| |n2|) (the facets' normals all point outward,
+  // or all inward when inverted), so only the two extreme edges need an angle. atan2 keeps full
+  // precision near 0 and 180 degrees, where acos would not.
+  double inv_norm[4];
+  for (int f = 0; f < 4; ++f) inv_norm[f] = 1 / normal[f].norm();
+  int e_lo = 0, e_hi = 0;
+  double c_lo = kInf, c_hi = -kInf;
   for (int e = 0; e < 6; ++e) {
+    const int f1 = edge_faces[e][0], f2 = edge_faces[e][1];
+    const double c = normal[f1].dot(normal[f2]) * inv_norm[f1] * inv_norm[f2];
+    if (c < c_lo) c_lo = c, e_lo = e;
+    if (c > c_hi) c_hi = c, e_hi = e;
+  }
+  auto angle = [&](int e) {
     const Vec3& n1 = normal[edge_faces[e][0]];
     const Vec3& n2 = normal[edge_faces[e][1]];
-    // The facets' normals all point outward (or, inverted, all inward): the interior angle is
-    // pi minus the angle between them. atan2 keeps full precision near 0 and 180 degrees.
-    const double angle = std::atan2(n1.cross(n2).norm(), -n1.dot(n2)) * kDegPerRad;
-    lo = std::min(lo, angle);
-    hi = std::max(hi, angle);
-  }
+    return std::atan2(n1.cross(n2).norm(), -n1.dot(n2)) * kDegPerRad;
+  };
+  const double lo = angle(e_lo), hi = angle(e_hi);
   q->min_dihedral_deg = lo;
   q->max_dihedral_deg = hi;
 }
@@ -138,23 +149,24 @@ using Mat = Eigen::Matrix<double, D, D>;
 template <int D>
 using RowMajorMap = Eigen::Map<const Eigen::Matrix<double, D, D, Eigen::RowMajor>>;
 
-// Corner-frame measures: scaled Jacobian always; det / condition number for linear types.
+// Corner-frame measures: scaled Jacobian always; det / condition number for linear types (once
+// for simplices, whose T is the same at every corner).
 template <int D>
-void measure_corners(CellType type, const double* p, bool linear, CellQuality* q) {
+void measure_corners(CellType type, const double* p, bool linear, bool simplex, CellQuality* q) {
   const CornerFrames& frames = corner_frames(type);
   double sj = kInf, min_det = kInf, cond = 0;
   for (int k = 0; k < frames.count; ++k) {
     const CornerFrame& f = frames.frame[k];
     Mat<D> e;
-    double lengths = 1;
+    double lengths2 = 1;  // product of squared lengths: one sqrt per frame
     for (int j = 0; j < D; ++j) {
       for (int i = 0; i < D; ++i) e(i, j) = p[D * f.ends[j] + i] - p[D * f.corner + i];
-      lengths *= e.col(j).norm();
+      lengths2 *= e.col(j).squaredNorm();
     }
     const double det = e.determinant();
-    sj = std::min(sj, lengths > 0 ? det / lengths / f.ideal_scaled : 0.0);
-    if (linear) {
-      const TMeasures m = measure_t(Mat<D>(e * RowMajorMap<D>(f.ideal_inverse)));
+    sj = std::min(sj, lengths2 > 0 ? det / (std::sqrt(lengths2) * f.ideal_scaled) : 0.0);
+    if (linear && (k == 0 || !simplex)) {
+      const TMeasures m = measure_t(Mat<D>(e * RowMajorMap<D>(f.ideal_inverse)), false);
       min_det = std::min(min_det, m.det);
       cond = std::max(cond, m.cond);
     }
@@ -205,7 +217,7 @@ void measure_samples(CellType type, const double* p, const QualityOptions& optio
     for (const SamplePoint& s : points) {
       double a[D * D];
       cell_jacobian(type, p, D, s.xi, a);
-      const TMeasures m = measure_t(Mat<D>(RowMajorMap<D>(a) * w_inv));
+      const TMeasures m = measure_t(Mat<D>(RowMajorMap<D>(a) * w_inv), simplex);
       min_det = std::min(min_det, m.det);
       cond = std::max(cond, m.cond);
       mean_ratio = std::min(mean_ratio, m.mean_ratio);
@@ -256,11 +268,12 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
   }
 
   const bool linear = info.order == 1;
+  const bool simplex = info.linear == CellType::kTri3 || info.linear == CellType::kTet4;
   if (d == 2) {
-    measure_corners<2>(type, p, linear, &q);
+    measure_corners<2>(type, p, linear, simplex, &q);
     if (!linear) measure_samples<2>(type, p, options, &q);
   } else {
-    measure_corners<3>(type, p, linear, &q);
+    measure_corners<3>(type, p, linear, simplex, &q);
     if (!linear) measure_samples<3>(type, p, options, &q);
   }
 
@@ -281,7 +294,8 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
   if (type == CellType::kTri3 || type == CellType::kTet4 || type == CellType::kQuad4) {
     // det J is constant (simplices) or affine in xi (the bilinear quad): the corners decide.
     q.certified = q.inverted ? 0 : 1;
-  } else if (options.bezier_certificate && jacobian_bezier_count(type) > 0) {
+  } else if (options.bezier_certificate && jacobian_bezier_count(type) > 0 &&
+             (options.certify_all_types || type == CellType::kTri6 || type == CellType::kTet10)) {
     double coefficients[kMaxBezierCoefficients];
     const int n = jacobian_bezier_coefficients(type, p, coefficients);
     const bool positive =

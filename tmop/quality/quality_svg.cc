@@ -46,8 +46,8 @@ struct Series {
 void legend(SvgCanvas& c, double x, double y, const std::vector<Series>& series) {
   for (std::size_t i = 0; i < series.size(); ++i) {
     const double yy = y + 16 * i;
-    c.rect(x - 70, yy - 9, 10, 10, series[i].colour);
-    c.text(x - 56, yy, series[i].label, 11);
+    c.rect(x - 130, yy - 9, 10, 10, series[i].colour);
+    c.text(x - 116, yy, series[i].label, 11);
   }
 }
 
@@ -229,6 +229,9 @@ std::string planar_map(const Mesh& mesh, const QualityReport& r) {
   const double size = 640, margin = 40;
   const double span = std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-300});
   const double scale = size / span;
+  // Centre the drawing in the square plot area.
+  const double shift_x = (size - (hi[0] - lo[0]) * scale) / 2;
+  const double shift_y = (size - (hi[1] - lo[1]) * scale) / 2;
   SvgCanvas c(size + 2 * margin + 120, size + 2 * margin);
   const bool thin = r.num_elements > 200000;  // no outlines: keeps huge plots readable and small
   const std::string stroke = thin ? "none" : "#333333";
@@ -244,8 +247,8 @@ std::string planar_map(const Mesh& mesh, const QualityReport& r) {
     const std::int32_t* nodes = mesh.cell(cell);
     auto add = [&](int local) {
       const double* x = mesh.vertex(nodes[local]);
-      xy[2 * n] = margin + (x[0] - lo[0]) * scale;
-      xy[2 * n + 1] = margin + size - (x[1] - lo[1]) * scale;
+      xy[2 * n] = margin + shift_x + (x[0] - lo[0]) * scale;
+      xy[2 * n + 1] = margin + size - shift_y - (x[1] - lo[1]) * scale;
       ++n;
     };
     for (int e = 0; e < info.num_edges; ++e) {
