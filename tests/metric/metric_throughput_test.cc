@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "tests/metric/metric_test_util.h"
-#include "tmop/metric/untangle.h"
+#include "tmop/metric/shape_3d.h"
 
 namespace tmop {
 namespace {
@@ -25,8 +25,15 @@ TEST(MetricThroughput, DISABLED_ResidualsAndJacobianPerSecond) {
       const Mat T = metric_test::random_matrix(d, rng, false, 0.5, 2.0);
       for (int n = 0; n < d * d; ++n) pool[k * d * d + n] = T.data()[n];
     }
+    std::vector<std::pair<std::string, std::unique_ptr<Metric>>> metrics;
     for (const std::string& name : metric_test::canonical_names(d)) {
-      std::unique_ptr<Metric> m = make_metric(name, d);
+      metrics.emplace_back(name, make_metric(name, d));
+    }
+    if (d == 3) {
+      metrics.emplace_back("shape_barrier_3d (rotation-fixed J)",
+                           make_shape_3d_metric(Shape3dForm::kBarrier, true));
+    }
+    for (const auto& [name, m] : metrics) {
       double r[kMaxMetricResiduals], J[kMaxMetricResiduals * 9];
       double sink = 0.0;
       const int n = 2000000;
