@@ -28,6 +28,13 @@ int Mesh::dim() const {
   return d;
 }
 
+int Mesh::num_elements() const {
+  const int d = dim();
+  int n = 0;
+  for (CellType t : cell_types) n += cell_dim(t) == d;
+  return n;
+}
+
 std::vector<int> Mesh::count_by_type() const {
   std::vector<int> count(kNumCellTypes, 0);
   for (CellType t : cell_types) ++count[static_cast<int>(t)];

@@ -63,7 +63,11 @@ class Mesh {
   // Highest reference dimension among the cells (0 for a mesh without cells).
   int dim() const;
   // True when the cell is one of the elements to optimize (its dimension equals dim()).
-  bool is_element(int c) const { return cell_dim(cell_types[c]) == dim(); }
+  // O(cells) because of dim(): in loops, compute dim() once and use the two-argument form.
+  bool is_element(int c) const { return is_element(c, dim()); }
+  bool is_element(int c, int mesh_dim) const { return cell_dim(cell_types[c]) == mesh_dim; }
+  // Number of element cells (cells of dimension dim()).
+  int num_elements() const;
   // Number of cells of each type, indexed by static_cast<int>(CellType).
   std::vector<int> count_by_type() const;
 

@@ -1,0 +1,47 @@
+// tmop/optimize/sample_point_cost.h
+// The Ceres residual block of one sample point: for each metric term t,
+//   T_t = A W_t^-1 = sum_i x_i G_ti^T,  G_ti = W_t^-T grad N_i(xi)   (d-vectors, precomputed),
+//   r_t = sqrt(c_t) * metric_t.residuals(T_t),
+// stacked. Parameter blocks are the cell's node coordinates (d doubles each, in the mesh's own
+// storage). dr/dx_i[a] = sqrt(c_t) sum_b dr/dT_ab G_ti[b], so the Jacobian is exact whenever the
+// metric's dr/dT is. Evaluate returns false when any term's metric does (a barrier metric at
+// det T <= 0), on the residual-only path too: Ceres then rejects the step.
+// The object does not own the metrics or G (they live in the Objective's arena).
+#ifndef TMOP_OPTIMIZE_SAMPLE_POINT_COST_H_
+#define TMOP_OPTIMIZE_SAMPLE_POINT_COST_H_
+
+#include <ceres/cost_function.h>
+
+#include "tmop/metric/metric.h"
+
+namespace tmop {
+
+constexpr int kMaxTerms = 2;
+
+struct SamplePointTerm {
+  const Metric* metric = nullptr;
+  const double* G = nullptr;  // num_nodes x d, row-major
+  double sqrt_weight = 1.0;
+};
+
+class SamplePointCost final : public ceres::CostFunction {
+ public:
+  SamplePointCost(int num_nodes, int dim, int num_terms, const SamplePointTerm* terms);
+  bool Evaluate(double const* const* x, double* residuals, double** jacobians) const override;
+
+  // Multiplies every term's weight by m >= 0 (the power-mean reweighting of stage.cc).
+  void set_weight_multiplier(double m);
+  // Exact sum_t c_t mu_t at the given node coordinates (without the multiplier).
+  double value(double const* const* x) const;
+
+ private:
+  int num_nodes_;
+  int dim_;
+  int num_terms_;
+  SamplePointTerm terms_[kMaxTerms];
+  double sqrt_multiplier_ = 1.0;
+};
+
+}  // namespace tmop
+
+#endif  // TMOP_OPTIMIZE_SAMPLE_POINT_COST_H_

@@ -1,0 +1,59 @@
+// tmop/optimize/solver_options.h
+// How one optimization stage is solved. Every stopping rule is dimensionless, so results do not
+// change when the mesh is translated, scaled or rotated (the stage also solves in normalised
+// coordinates: centred on the vertex centroid, lengths divided by the mean element edge length).
+#ifndef TMOP_OPTIMIZE_SOLVER_OPTIONS_H_
+#define TMOP_OPTIMIZE_SOLVER_OPTIONS_H_
+
+#include <functional>
+#include <string>
+
+namespace tmop {
+
+struct IterationRecord {
+  int iteration = 0;
+  double objective = 0;    // mean over elements of the (weighted) metric value, exact mu
+  double min_quality = 0;  // worst shape quality over sample points (1 ideal, <= 0 inverted)
+  int inverted = 0;        // elements with det A <= 0 at a sample point
+  double seconds = 0;      // wall time since the stage started
+};
+
+struct SolverOptions {
+  enum class Method {
+    kLevenbergMarquardt,  // default: robust, fewest rejected steps near barriers
+    kDogleg,              // cheaper steps; try it when barrier rejections are frequent
+  };
+  enum class LinearSolver {
+    kAuto,            // sparse Cholesky for small problems, CGNR + Jacobi otherwise
+    kSparseCholesky,  // SPARSE_NORMAL_CHOLESKY (SuiteSparse): exact steps, memory grows fast
+    kCgnr,            // CGNR + Jacobi preconditioner: matrix-free, O(N) memory
+  };
+  Method method = Method::kLevenbergMarquardt;
+  LinearSolver linear_solver = LinearSolver::kAuto;
+  // Problems with at most this many free coordinates use sparse Cholesky under kAuto.
+  int cholesky_max_free_coordinates = 60000;
+  // CGNR inner iterations per outer step (Ceres's max_linear_solver_iterations).
+  int cgnr_max_iterations = 50;
+
+  int max_iterations = 200;  // outer (Ceres) iterations
+  double max_seconds = 1e9;  // wall-clock cap for the stage
+  // Stop when the objective decreases by less than this fraction of itself in a step.
+  double function_tolerance = 1e-9;
+  // Stop when the largest gradient entry falls below this fraction of its initial value.
+  double gradient_tolerance = 1e-9;
+  // Stop when no vertex moves by more than this fraction of its shortest incident edge.
+  double movement_tolerance = 1e-10;
+
+  int threads = 0;  // 0: all hardware threads
+  // Called after every iteration (also iteration 0) when set; verbose prints a line to stderr.
+  std::function<void(const IterationRecord&)> progress;
+  bool verbose = false;
+};
+
+// "lm" / "dogleg"; "auto" / "cholesky" / "cgnr". false when unknown.
+bool solver_method_from_name(const std::string& name, SolverOptions::Method* method);
+bool linear_solver_from_name(const std::string& name, SolverOptions::LinearSolver* solver);
+
+}  // namespace tmop
+
+#endif  // TMOP_OPTIMIZE_SOLVER_OPTIONS_H_

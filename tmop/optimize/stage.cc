@@ -1,0 +1,574 @@
+#include "tmop/optimize/stage.h"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <limits>
+#include <thread>
+
+#include "tmop/element/shape.h"
+#include "tmop/mesh/topology.h"
+#include "tmop/optimize/sample_point_cost.h"
+#include "tmop/target/ideal_element.h"
+
+namespace tmop {
+namespace {
+
+double det_d(const double* A, int d) {
+  if (d == 2) return A[0] * A[3] - A[1] * A[2];
+  return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
+         A[2] * (A[3] * A[7] - A[4] * A[6]);
+}
+
+bool inverse_d(const double* A, int d, double* Ainv) {
+  const double det = det_d(A, d);
+  if (!(det != 0) || !std::isfinite(det)) return false;
+  if (d == 2) {
+    Ainv[0] = A[3] / det;
+    Ainv[1] = -A[1] / det;
+    Ainv[2] = -A[2] / det;
+    Ainv[3] = A[0] / det;
+    return true;
+  }
+  Ainv[0] = (A[4] * A[8] - A[5] * A[7]) / det;
+  Ainv[1] = (A[2] * A[7] - A[1] * A[8]) / det;
+  Ainv[2] = (A[1] * A[5] - A[2] * A[4]) / det;
+  Ainv[3] = (A[5] * A[6] - A[3] * A[8]) / det;
+  Ainv[4] = (A[0] * A[8] - A[2] * A[6]) / det;
+  Ainv[5] = (A[2] * A[3] - A[0] * A[5]) / det;
+  Ainv[6] = (A[3] * A[7] - A[4] * A[6]) / det;
+  Ainv[7] = (A[1] * A[6] - A[0] * A[7]) / det;
+  Ainv[8] = (A[0] * A[4] - A[1] * A[3]) / det;
+  return true;
+}
+
+// G_i = W^-T g_i for every node i: G[i*d + b] = sum_c Winv[c*d + b] g[i*d + c].
+void make_G(int n, int d, const double* grad, const double* Winv, double* G) {
+  for (int i = 0; i < n; ++i)
+    for (int b = 0; b < d; ++b) {
+      double v = 0;
+      for (int c = 0; c < d; ++c) v += Winv[c * d + b] * grad[i * d + c];
+      G[i * d + b] = v;
+    }
+}
+
+void compute_T(int n, int d, const Mesh& mesh, const std::int32_t* nodes, const double* G,
+               double* T) {
+  for (int k = 0; k < d * d; ++k) T[k] = 0;
+  for (int i = 0; i < n; ++i) {
+    const double* x = mesh.vertex(nodes[i]);
+    for (int a = 0; a < d; ++a)
+      for (int b = 0; b < d; ++b) T[a * d + b] += x[a] * G[i * d + b];
+  }
+}
+
+// Shape quality of T: d det(T)^(2/d) / |T|^2, negative when det T < 0.
+double shape_quality(const double* T, int d) {
+  double f = 0;
+  for (int k = 0; k < d * d; ++k) f += T[k] * T[k];
+  const double det = det_d(T, d);
+  if (!(f > 0)) return 0;
+  const double mag = d == 2 ? std::abs(det) : std::cbrt(det * det);
+  const double q = d * mag / f;
+  return det > 0 ? q : -q;
+}
+
+// G for the ideal element of each (type, point) of a rule.
+struct IdealTable {
+  std::vector<double> G[kNumCellTypes];
+  IdealTable(SampleRule rule, int d) {
+    for (int t = 0; t < kNumCellTypes; ++t) {
+      const CellType type = static_cast<CellType>(t);
+      if (cell_dim(type) != d) continue;
+      double W[9], Winv[9], grad[kMaxCellNodes * 3];
+      ideal_jacobian(type, W);
+      inverse_d(W, d, Winv);
+      const int n = cell_num_nodes(type);
+      for (const SamplePoint& p : sample_points(type, rule)) {
+        shape_gradients(type, p.xi, grad);
+        G[t].resize(G[t].size() + n * d);
+        make_G(n, d, grad, Winv, G[t].data() + G[t].size() - n * d);
+      }
+    }
+  }
+};
+
+IterationRecord measure(const Mesh& mesh, SampleRule rule, const IdealTable& table) {
+  IterationRecord rec;
+  const int d = mesh.dim();
+  rec.min_quality = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!mesh.is_element(c, d)) continue;
+    const CellType t = mesh.cell_type(c);
+    const int n = cell_num_nodes(t);
+    const std::vector<double>& G = table.G[static_cast<int>(t)];
+    bool inverted = false;
+    for (std::size_t off = 0; off < G.size(); off += n * d) {
+      double T[9];
+      compute_T(n, d, mesh, mesh.cell(c), G.data() + off, T);
+      const double q = shape_quality(T, d);
+      if (!(det_d(T, d) > 0)) inverted = true;
+      rec.min_quality = std::min(rec.min_quality, q);
+    }
+    rec.inverted += inverted;
+  }
+  if (!std::isfinite(rec.min_quality)) rec.min_quality = 0;
+  return rec;
+}
+
+// Translation and scale that make the problem dimensionless: x' = (x - centre) / length.
+struct Normalization {
+  double centre[3] = {0, 0, 0};
+  double length = 1;
+  void apply(Mesh* m) const {
+    for (int v = 0; v < m->num_vertices(); ++v)
+      for (int a = 0; a < m->space_dim; ++a)
+        m->vertex(v)[a] = (m->vertex(v)[a] - centre[a]) / length;
+  }
+  void undo(Mesh* m) const {
+    for (int v = 0; v < m->num_vertices(); ++v)
+      for (int a = 0; a < m->space_dim; ++a) m->vertex(v)[a] = centre[a] + length * m->vertex(v)[a];
+  }
+};
+
+double edge_length(const Mesh& m, int a, int b) {
+  double s = 0;
+  for (int k = 0; k < m.space_dim; ++k) {
+    const double t = m.vertex(a)[k] - m.vertex(b)[k];
+    s += t * t;
+  }
+  return std::sqrt(s);
+}
+
+// Mean length over the element corner edges (shared edges counted once per cell: good enough
+// for a scale) and, per vertex, the shortest incident edge.
+double cell_edge_lengths(const Mesh& m, std::vector<double>* shortest) {
+  shortest->assign(m.num_vertices(), std::numeric_limits<double>::infinity());
+  double sum = 0;
+  long count = 0;
+  const int d = m.dim();
+  for (int c = 0; c < m.num_cells(); ++c) {
+    if (!m.is_element(c, d)) continue;
+    const CellInfo& info = cell_info(m.cell_type(c));
+    const std::int32_t* nodes = m.cell(c);
+    for (int e = 0; e < info.num_edges; ++e) {
+      const int a = nodes[info.edges[e][0]], b = nodes[info.edges[e][1]];
+      const double l = edge_length(m, a, b);
+      sum += l;
+      ++count;
+      (*shortest)[a] = std::min((*shortest)[a], l);
+      (*shortest)[b] = std::min((*shortest)[b], l);
+    }
+  }
+  return count ? sum / count : 1.0;
+}
+
+class StageCallback final : public ceres::IterationCallback {
+ public:
+  StageCallback(Mesh* mesh, const StageSpec& spec, const IdealTable& table,
+                const std::vector<int>& free_vertices, const std::vector<double>& shortest,
+                int num_elements, StageResult* result)
+      : mesh_(mesh),
+        spec_(spec),
+        table_(table),
+        free_(free_vertices),
+        shortest_(shortest),
+        num_elements_(num_elements),
+        result_(result),
+        start_(std::chrono::steady_clock::now()) {
+    previous_.resize(free_.size() * mesh->space_dim);
+    save(&previous_);
+  }
+
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    IterationRecord rec = measure(*mesh_, spec_.rule, table_);
+    rec.iteration = s.iteration == 0 && !result_->history.empty()
+                        ? result_->history.back().iteration  // a reweighting round restarts
+                        : (result_->history.empty() ? 0 : result_->history.back().iteration + 1);
+    rec.objective = 2 * s.cost / std::max(1, num_elements_);
+    rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    result_->history.push_back(rec);
+    if (spec_.solver.verbose)
+      std::fprintf(stderr,
+                   "  [%s] iter %4d  objective %.6e  min quality %.4f  inverted %d  %.2f s\n",
+                   spec_.name.c_str(), rec.iteration, rec.objective, rec.min_quality, rec.inverted,
+                   rec.seconds);
+    if (spec_.solver.progress) spec_.solver.progress(rec);
+
+    if (s.iteration == 0) {
+      initial_gradient_ = s.gradient_max_norm;
+      return ceres::SOLVER_CONTINUE;
+    }
+    if (initial_gradient_ > 0 &&
+        s.gradient_max_norm <= spec_.solver.gradient_tolerance * initial_gradient_) {
+      reason_ = "gradient below tolerance (relative to the initial gradient)";
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    if (s.step_is_successful) {
+      const int sd = mesh_->space_dim;
+      double worst = 0;
+      for (std::size_t k = 0; k < free_.size(); ++k) {
+        const double* x = mesh_->vertex(free_[k]);
+        double m2 = 0;
+        for (int a = 0; a < sd; ++a) {
+          const double t = x[a] - previous_[k * sd + a];
+          m2 += t * t;
+        }
+        worst = std::max(worst, std::sqrt(m2) / shortest_[free_[k]]);
+      }
+      save(&previous_);
+      if (worst <= spec_.solver.movement_tolerance) {
+        reason_ = "vertex movement below tolerance (relative to local edge length)";
+        return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+      }
+    }
+    return ceres::SOLVER_CONTINUE;
+  }
+
+  const std::string& reason() const { return reason_; }
+
+ private:
+  void save(std::vector<double>* out) const {
+    const int sd = mesh_->space_dim;
+    for (std::size_t k = 0; k < free_.size(); ++k)
+      for (int a = 0; a < sd; ++a) (*out)[k * sd + a] = mesh_->vertex(free_[k])[a];
+  }
+
+  Mesh* mesh_;
+  const StageSpec& spec_;
+  const IdealTable& table_;
+  const std::vector<int>& free_;
+  const std::vector<double>& shortest_;
+  int num_elements_;
+  StageResult* result_;
+  std::chrono::steady_clock::time_point start_;
+  std::vector<double> previous_;
+  double initial_gradient_ = 0;
+  std::string reason_;
+};
+
+// Exact mean of sum_t c_t mu_t over elements (weights of a cell's points sum to 1).
+double exact_objective(const Mesh& mesh, const StageSpec& spec,
+                       const std::vector<std::vector<double>>& G, const std::vector<int>& cells,
+                       const std::vector<double>& point_weight, int num_elements) {
+  const int d = mesh.dim();
+  double sum = 0;
+  for (std::size_t p = 0; p < cells.size(); ++p) {
+    const int c = cells[p];
+    const int n = mesh.cell_size(c);
+    for (std::size_t t = 0; t < spec.terms.size(); ++t) {
+      const double c_t = spec.terms[t].weights.empty() ? 1.0 : spec.terms[t].weights[p];
+      if (c_t == 0) continue;
+      double T[9];
+      compute_T(n, d, mesh, mesh.cell(c), G[t].data() + p * kMaxCellNodes * 3, T);
+      sum += point_weight[p] * c_t * spec.terms[t].metric->value(T);
+    }
+  }
+  return sum / std::max(1, num_elements);
+}
+
+std::string list_cells(const std::vector<int>& cells) {
+  std::string s;
+  for (std::size_t i = 0; i < cells.size() && i < 10; ++i)
+    s += (i ? ", " : "") + std::to_string(cells[i]);
+  if (cells.size() > 10) s += ", ... (" + std::to_string(cells.size()) + " in all)";
+  return s;
+}
+
+}  // namespace
+
+bool solver_method_from_name(const std::string& name, SolverOptions::Method* method) {
+  if (name == "lm")
+    *method = SolverOptions::Method::kLevenbergMarquardt;
+  else if (name == "dogleg")
+    *method = SolverOptions::Method::kDogleg;
+  else
+    return false;
+  return true;
+}
+
+bool linear_solver_from_name(const std::string& name, SolverOptions::LinearSolver* solver) {
+  if (name == "auto")
+    *solver = SolverOptions::LinearSolver::kAuto;
+  else if (name == "cholesky")
+    *solver = SolverOptions::LinearSolver::kSparseCholesky;
+  else if (name == "cgnr")
+    *solver = SolverOptions::LinearSolver::kCgnr;
+  else
+    return false;
+  return true;
+}
+
+IterationRecord measure_mesh(const Mesh& mesh, SampleRule rule) {
+  const int d = mesh.dim();
+  if (d < 2 || mesh.space_dim != d) return IterationRecord();
+  IdealTable table(rule, d);
+  return measure(mesh, rule, table);
+}
+
+Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
+  *result = StageResult();
+  result->name = spec.name;
+  const auto start = std::chrono::steady_clock::now();
+  const int d = mesh->dim();
+  if (d < 2) return Status::Failure("the mesh has no 2D or 3D elements to optimize");
+  if (mesh->space_dim != d)
+    return Status::Failure("surface meshes (2D cells in 3D) need a geometry (recipe surface)");
+  if (spec.terms.empty() || spec.terms.size() > static_cast<std::size_t>(kMaxTerms))
+    return Status::Failure("a stage needs 1 or 2 metric terms");
+  for (const TermSpec& t : spec.terms) {
+    if (!t.metric) return Status::Failure("a metric term has no metric");
+    if (t.metric->dim() != d)
+      return Status::Failure("metric " + t.metric->name() + " is " +
+                             std::to_string(t.metric->dim()) + "D but the mesh is " +
+                             std::to_string(d) + "D");
+  }
+  for (double x : mesh->coords)
+    if (!std::isfinite(x)) return Status::Failure("the mesh has a non-finite coordinate");
+
+  // Fixed vertices: given, or the boundary.
+  std::vector<char> fixed = spec.fixed;
+  if (fixed.empty()) fixed = boundary_vertex_mask(*mesh);
+  if (static_cast<int>(fixed.size()) != mesh->num_vertices())
+    return Status::Failure("fixed-vertex flags: one per vertex expected");
+
+  // Canonical sample-point list.
+  std::vector<int> point_cell, point_index;
+  std::vector<double> point_weight;
+  int num_elements = 0;
+  for (int c = 0; c < mesh->num_cells(); ++c) {
+    if (!mesh->is_element(c, d)) continue;
+    ++num_elements;
+    const auto& pts = sample_points(mesh->cell_type(c), spec.rule);
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      point_cell.push_back(c);
+      point_index.push_back(static_cast<int>(k));
+      point_weight.push_back(pts[k].weight);
+    }
+  }
+  const std::size_t P = point_cell.size();
+  for (const TermSpec& t : spec.terms)
+    if (!t.weights.empty() && t.weights.size() != P)
+      return Status::Failure("trade-off weights: " + std::to_string(P) +
+                             " expected (one per sample point), got " +
+                             std::to_string(t.weights.size()));
+  result->num_elements = num_elements;
+  result->num_sample_points = static_cast<int>(P);
+
+  // Solve in normalised coordinates; keep the original to restore on failure.
+  const std::vector<double> original = mesh->coords;
+  Normalization norm;
+  {
+    std::vector<double> shortest;
+    const int nv = mesh->num_vertices();
+    for (int v = 0; v < nv; ++v)
+      for (int a = 0; a < d; ++a) norm.centre[a] += mesh->vertex(v)[a] / nv;
+    norm.length = cell_edge_lengths(*mesh, &shortest);
+    if (!(norm.length > 0)) return Status::Failure("the mesh has no edge of positive length");
+  }
+  norm.apply(mesh);
+  auto fail = [&](const std::string& message) {
+    mesh->coords = original;
+    return Status::Failure(message);
+  };
+  std::vector<double> shortest;
+  cell_edge_lengths(*mesh, &shortest);
+
+  // Targets -> G per term per point (fixed stride kMaxCellNodes * 3 keeps indexing simple).
+  const int stride = kMaxCellNodes * 3;
+  std::vector<std::vector<double>> G(spec.terms.size(), std::vector<double>(P * stride));
+  for (std::size_t t = 0; t < spec.terms.size(); ++t) {
+    TargetSpec target = spec.terms[t].target;
+    Mesh reference_copy;
+    if (target.type == TargetType::kReference && target.reference) {
+      reference_copy = *target.reference;
+      if (reference_copy.num_vertices() == mesh->num_vertices()) {
+        Normalization rn = norm;  // same transform as the mesh: targets stay consistent
+        rn.apply(&reference_copy);
+      }
+      target.reference = &reference_copy;
+    }
+    Mesh* source = mesh;
+    Mesh field_copy;
+    if (target.type == TargetType::kIdealSizeField) {
+      field_copy.space_dim = mesh->space_dim;
+      field_copy = *mesh;
+      for (DataArray& a : field_copy.point_data)
+        if (a.name == target.size_field)
+          for (double& v : a.values) v /= norm.length;
+      source = &field_copy;
+    }
+    std::vector<double> W;
+    Status s = build_targets(*source, spec.rule, target, &W);
+    if (!s.ok()) return fail(s.message());
+    double grad[kMaxCellNodes * 3], Winv[9];
+    for (std::size_t p = 0; p < P; ++p) {
+      const CellType type = mesh->cell_type(point_cell[p]);
+      const SamplePoint& sp = sample_points(type, spec.rule)[point_index[p]];
+      if (!inverse_d(W.data() + p * d * d, d, Winv))
+        return fail("cell " + std::to_string(point_cell[p]) + ": singular target matrix");
+      shape_gradients(type, sp.xi, grad);
+      make_G(cell_num_nodes(type), d, grad, Winv, G[t].data() + p * stride);
+    }
+  }
+
+  IdealTable table(spec.rule, d);
+  const IterationRecord before = measure(*mesh, spec.rule, table);
+  result->inverted_before = before.inverted;
+  result->min_quality_before = before.min_quality;
+  bool barrier = false;
+  for (const TermSpec& t : spec.terms) barrier |= t.metric->barrier();
+  result->initial_objective =
+      exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements);
+
+  if (barrier && before.inverted > 0) {
+    std::vector<int> bad;
+    for (std::size_t p = 0; p < P; ++p) {
+      double T[9];
+      const int c = point_cell[p];
+      compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), G[0].data() + p * stride, T);
+      if (!(det_d(T, d) > 0) && (bad.empty() || bad.back() != c)) bad.push_back(c);
+    }
+    return fail("barrier metric on an inverted mesh (untangle first): inverted cells " +
+                list_cells(bad));
+  }
+
+  // The Ceres problem: one residual block per sample point with a free node.
+  ceres::Problem::Options popts;
+  popts.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  popts.enable_fast_removal = false;
+  popts.disable_all_safety_checks = true;
+  ceres::Problem problem(popts);
+  std::deque<SamplePointCost> costs;
+  std::vector<int> cost_point;  // sample point of each cost
+  std::vector<double*> blocks;
+  std::vector<char> in_problem(mesh->num_vertices(), 0);
+  for (std::size_t p = 0; p < P; ++p) {
+    const int c = point_cell[p];
+    const int n = mesh->cell_size(c);
+    const std::int32_t* nodes = mesh->cell(c);
+    bool any_free = false;
+    for (int i = 0; i < n; ++i) any_free |= !fixed[nodes[i]];
+    if (!any_free) continue;
+    SamplePointTerm terms[kMaxTerms];
+    int nt = 0;
+    for (std::size_t t = 0; t < spec.terms.size(); ++t) {
+      const double c_t = spec.terms[t].weights.empty() ? 1.0 : spec.terms[t].weights[p];
+      if (c_t < 0 || !std::isfinite(c_t))
+        return fail("trade-off weight of sample point " + std::to_string(p) +
+                    " is negative or not finite");
+      // A term of zero weight still guards its barrier: residuals() is evaluated.
+      terms[nt].metric = spec.terms[t].metric.get();
+      terms[nt].G = G[t].data() + p * stride;
+      terms[nt].sqrt_weight = std::sqrt(point_weight[p] * std::max(c_t, 0.0));
+      ++nt;
+    }
+    costs.emplace_back(n, d, nt, terms);
+    cost_point.push_back(static_cast<int>(p));
+    blocks.clear();
+    for (int i = 0; i < n; ++i) {
+      blocks.push_back(mesh->vertex(nodes[i]));
+      in_problem[nodes[i]] = 1;
+    }
+    problem.AddResidualBlock(&costs.back(), nullptr, blocks);
+  }
+  std::vector<int> free_vertices;
+  for (int v = 0; v < mesh->num_vertices(); ++v) {
+    if (!in_problem[v]) continue;
+    if (fixed[v])
+      problem.SetParameterBlockConstant(mesh->vertex(v));
+    else
+      free_vertices.push_back(v);
+  }
+  result->num_free_vertices = static_cast<int>(free_vertices.size());
+
+  if (free_vertices.empty()) {
+    result->final_objective = result->initial_objective;
+    result->inverted_after = before.inverted;
+    result->min_quality_after = before.min_quality;
+    result->termination = "nothing to optimize: every vertex is fixed";
+    norm.undo(mesh);
+    mesh->coords = original;
+    return Status::Ok();
+  }
+
+  ceres::Solver::Options so;
+  so.minimizer_type = ceres::TRUST_REGION;
+  so.trust_region_strategy_type = spec.solver.method == SolverOptions::Method::kDogleg
+                                      ? ceres::DOGLEG
+                                      : ceres::LEVENBERG_MARQUARDT;
+  const int free_coordinates = static_cast<int>(free_vertices.size()) * d;
+  bool cholesky = spec.solver.linear_solver == SolverOptions::LinearSolver::kSparseCholesky ||
+                  (spec.solver.linear_solver == SolverOptions::LinearSolver::kAuto &&
+                   free_coordinates <= spec.solver.cholesky_max_free_coordinates);
+  if (cholesky) {
+    so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    result->linear_solver = "sparse_normal_cholesky";
+  } else {
+    so.linear_solver_type = ceres::CGNR;
+    so.preconditioner_type = ceres::JACOBI;
+    so.max_linear_solver_iterations = spec.solver.cgnr_max_iterations;
+    result->linear_solver = "cgnr_jacobi";
+  }
+  so.use_nonmonotonic_steps = true;
+  so.initial_trust_region_radius = 1e2;
+  so.max_num_iterations = spec.solver.max_iterations;
+  so.max_solver_time_in_seconds = spec.solver.max_seconds;
+  so.function_tolerance = spec.solver.function_tolerance;
+  so.gradient_tolerance = 0;       // relative rule in the callback instead
+  so.parameter_tolerance = 1e-16;  // movement rule in the callback instead
+  so.num_threads = spec.solver.threads > 0 ? spec.solver.threads
+                                           : std::max(1u, std::thread::hardware_concurrency());
+  so.logging_type = ceres::SILENT;
+  so.minimizer_progress_to_stdout = false;
+  so.update_state_every_iteration = true;
+  StageCallback callback(mesh, spec, table, free_vertices, shortest, num_elements, result);
+  so.callbacks.push_back(&callback);
+
+  ceres::Solver::Summary summary;
+  const int rounds = spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1;
+  std::vector<const double*> xs(kMaxCellNodes);
+  for (int round = 0; round < rounds; ++round) {
+    if (round > 0) {
+      // Reweight: multiplier (v_k / mean v)^(p-1) from the current per-point values.
+      std::vector<double> v(costs.size());
+      double mean = 0;
+      for (std::size_t k = 0; k < costs.size(); ++k) {
+        const int c = point_cell[cost_point[k]];
+        for (int i = 0; i < mesh->cell_size(c); ++i) xs[i] = mesh->vertex(mesh->cell(c)[i]);
+        costs[k].set_weight_multiplier(1.0);
+        v[k] = std::max(0.0, costs[k].value(xs.data()));
+        mean += v[k] / costs.size();
+      }
+      if (!(mean > 0)) break;
+      for (std::size_t k = 0; k < costs.size(); ++k)
+        costs[k].set_weight_multiplier(std::pow(v[k] / mean + 1e-12, spec.power - 1));
+    }
+    ceres::Solve(so, &problem, &summary);
+    if (std::getenv("TMOP_CERES_REPORT"))
+      std::fprintf(stderr, "%s\n", summary.FullReport().c_str());
+    ++result->solves;
+    result->iterations += static_cast<int>(summary.iterations.size()) - 1;
+    if (summary.termination_type == ceres::FAILURE)
+      return fail("solver failed: " + summary.message);
+  }
+
+  // Ceres leaves the best parameters in place; the callback may have seen a later state.
+  const IterationRecord after = measure(*mesh, spec.rule, table);
+  result->inverted_after = after.inverted;
+  result->min_quality_after = after.min_quality;
+  result->final_objective = exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements);
+  result->termination = callback.reason().empty() ? summary.message : callback.reason();
+  norm.undo(mesh);
+  if (barrier && after.inverted > 0)  // cannot happen: every accepted step was evaluated
+    return fail("internal error: a barrier stage produced inverted elements");
+  result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Ok();
+}
+
+}  // namespace tmop

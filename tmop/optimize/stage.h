@@ -1,0 +1,73 @@
+// tmop/optimize/stage.h
+// One optimization stage: minimise F(x) = sum_e sum_k w_k sum_t c_tk mu_t(A_k W_tk^-1) over the
+// free vertex coordinates of `mesh`, in place, with Ceres (one residual block per sample point,
+// parameter blocks = the mesh's own coordinates). Recipes chain stages.
+//
+// Inputs: the mesh (modified in place), the stage's terms (metric + target + optional per-point
+// trade-off weights c_k), the sample rule, which vertices are fixed, solver options.
+// Output: StageResult. A failing stage (bad input, a barrier metric on an inverted mesh) returns
+// a Status and leaves the mesh unchanged.
+#ifndef TMOP_OPTIMIZE_STAGE_H_
+#define TMOP_OPTIMIZE_STAGE_H_
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tmop/core/status.h"
+#include "tmop/element/sample_points.h"
+#include "tmop/mesh/mesh.h"
+#include "tmop/metric/metric.h"
+#include "tmop/optimize/solver_options.h"
+#include "tmop/target/target.h"
+
+namespace tmop {
+
+struct TermSpec {
+  std::shared_ptr<const Metric> metric;  // dimension must equal the mesh's element dimension
+  TargetSpec target;
+  // Per-sample-point trade-off weights c_k in the canonical order (target.h); empty means 1.
+  std::vector<double> weights;
+};
+
+struct StageSpec {
+  std::string name = "stage";
+  SampleRule rule = SampleRule::kDefault;
+  std::vector<TermSpec> terms;  // 1 or 2 terms
+  // Per-vertex flags (1 = fixed). Empty: every boundary vertex is fixed.
+  std::vector<char> fixed;
+  SolverOptions solver;
+  // Power-mean order p >= 1: minimise sum_k (mu_k - mu_min)^p instead of the plain sum, which
+  // weights the worst points up. Reached by iteratively reweighted least squares: each round
+  // solves the plain least-squares problem with fixed weights (mu_k / mean mu)^(p-1) from the
+  // previous round, so every Ceres solve keeps the metric's exact Gauss-Newton model (a
+  // residual of the form r |r|^(p-1) slows Levenberg-Marquardt to a crawl).
+  double power = 1.0;
+  int power_rounds = 4;  // reweighting rounds after the first solve when power > 1
+};
+
+struct StageResult {
+  std::string name;
+  double initial_objective = 0;  // mean exact metric value per element
+  double final_objective = 0;
+  int iterations = 0;
+  std::string termination;  // why the solver stopped, in words
+  double seconds = 0;
+  int inverted_before = 0, inverted_after = 0;
+  double min_quality_before = 0, min_quality_after = 0;
+  int num_elements = 0, num_sample_points = 0, num_free_vertices = 0;
+  std::string linear_solver;
+  int solves = 0;  // Ceres solves (1 + reweighting rounds)
+  std::vector<IterationRecord> history;
+};
+
+Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result);
+
+// The worst shape quality and the inverted count of a mesh, measured exactly as the progress
+// line measures them (sample points of `rule`; quality = d det(T)^(2/d) / |T|^2 with T relative
+// to the ideal element: the mean ratio for simplices).
+IterationRecord measure_mesh(const Mesh& mesh, SampleRule rule);
+
+}  // namespace tmop
+
+#endif  // TMOP_OPTIMIZE_STAGE_H_

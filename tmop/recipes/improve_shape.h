@@ -1,0 +1,48 @@
+// tmop/recipes/improve_shape.h
+// Shape improvement: move the free vertices so that every element is as close as possible to
+// the ideal element's shape (equilateral triangle, square, regular tet, cube, right prism,
+// pyramid), whatever its size. Barrier metric by default, so a valid mesh stays valid.
+//
+// The default objective is a power mean of order 2 of the shape metric (sum of mu^2): a plain
+// mean lets the worst element get worse while the average improves; squaring weights the worst
+// elements up. The recipe then checks the worst element: if it got worse it re-runs with a
+// higher order, and it never returns a mesh whose worst element is worse than the input's.
+#ifndef TMOP_RECIPES_IMPROVE_SHAPE_H_
+#define TMOP_RECIPES_IMPROVE_SHAPE_H_
+
+#include <string>
+#include <vector>
+
+#include "tmop/core/status.h"
+#include "tmop/mesh/mesh.h"
+#include "tmop/optimize/stage.h"
+#include "tmop/recipes/recipe_result.h"
+
+namespace tmop {
+
+struct ShapeOptions {
+  // Metric name (metric_names()); empty picks the default shape barrier metric of the
+  // dimension: shape_barrier_2d in 2D, shape_3d (|T|^2 / (3 tau^(2/3)) - 1) in 3D.
+  std::string metric;
+  TargetSpec target;  // default: ideal shape, equal size (size does not matter to shape)
+  SampleRule rule = SampleRule::kDefault;
+  // Power-mean order p >= 1 (1 = plain mean).
+  double power = 2.0;
+  // Never return a mesh whose worst element is worse than the input's.
+  bool guard_worst = true;
+  std::vector<char> fixed;  // per-vertex flags; empty = boundary fixed
+  SolverOptions solver;
+};
+
+// Fails, leaving the mesh unchanged, on an inverted input when the metric is a barrier (the
+// message names the inverted cells), on an unknown metric, or when the solver fails.
+Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* result);
+
+// The metric a recipe uses for `name` (empty = default shape metric) and power p, wrapped in a
+// power mean when p != 1. nullptr and a message when the name is unknown.
+std::shared_ptr<const Metric> recipe_metric(const std::string& name, int dim, double power,
+                                            std::string* error);
+
+}  // namespace tmop
+
+#endif  // TMOP_RECIPES_IMPROVE_SHAPE_H_

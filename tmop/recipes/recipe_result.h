@@ -1,0 +1,36 @@
+// tmop/recipes/recipe_result.h
+// What a recipe did: its stages in order, and the mesh's measures before and after (the same
+// measure as the progress line: worst shape quality over sample points and inverted count).
+#ifndef TMOP_RECIPES_RECIPE_RESULT_H_
+#define TMOP_RECIPES_RECIPE_RESULT_H_
+
+#include <string>
+#include <vector>
+
+#include "tmop/optimize/stage.h"
+
+namespace tmop {
+
+struct RecipeResult {
+  std::string recipe;
+  std::vector<StageResult> stages;
+  IterationRecord before, after;
+  double seconds = 0;
+};
+
+// JSON object (no trailing newline) with stable keys, numbers printed with %.17g:
+// {"recipe", "seconds", "before": {"min_quality", "inverted"}, "after": {...},
+//  "stages": [{"name", "linear_solver", "elements", "sample_points", "free_vertices",
+//   "initial_objective", "final_objective", "iterations", "termination", "seconds",
+//   "inverted_before", "inverted_after", "min_quality_before", "min_quality_after",
+//   "history": [{"iteration", "objective", "min_quality", "inverted", "seconds"}]}]}
+std::string recipe_json(const RecipeResult& result);
+
+// Escapes a string for JSON (quotes included).
+std::string json_string(const std::string& s);
+// %.17g, or null for non-finite values (JSON has no inf/nan).
+std::string json_number(double v);
+
+}  // namespace tmop
+
+#endif  // TMOP_RECIPES_RECIPE_RESULT_H_

@@ -1,0 +1,159 @@
+#include "tmop/target/target.h"
+
+#include <cmath>
+#include <string>
+
+#include "tmop/element/shape.h"
+#include "tmop/mesh/topology.h"
+#include "tmop/target/ideal_element.h"
+
+namespace tmop {
+namespace {
+
+struct NameOf {
+  TargetType type;
+  const char* name;
+};
+const NameOf kNames[] = {
+    {TargetType::kIdealUnitSize, "ideal_unit"},  {TargetType::kIdealEqualSize, "equal_size"},
+    {TargetType::kIdealLocalSize, "local_size"}, {TargetType::kIdealSizeField, "size_field"},
+    {TargetType::kReference, "reference"},       {TargetType::kMeanEdgeLength, "lambda_identity"},
+};
+
+double det(const double* A, int d) {
+  if (d == 2) return A[0] * A[3] - A[1] * A[2];
+  return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
+         A[2] * (A[3] * A[7] - A[4] * A[6]);
+}
+
+void gather(const Mesh& mesh, int c, double* x) {
+  const int n = mesh.cell_size(c), sd = mesh.space_dim;
+  const std::int32_t* nodes = mesh.cell(c);
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < sd; ++a) x[i * sd + a] = mesh.vertex(nodes[i])[a];
+}
+
+bool same_topology(const Mesh& a, const Mesh& b) {
+  return a.num_vertices() == b.num_vertices() && a.space_dim == b.space_dim &&
+         a.cell_types == b.cell_types && a.cell_nodes == b.cell_nodes;
+}
+
+}  // namespace
+
+bool target_type_from_name(const std::string& name, TargetType* type) {
+  for (const NameOf& n : kNames)
+    if (name == n.name) {
+      *type = n.type;
+      return true;
+    }
+  return false;
+}
+
+const char* target_type_name(TargetType type) {
+  for (const NameOf& n : kNames)
+    if (n.type == type) return n.name;
+  return "?";
+}
+
+double cell_equivalent_edge(const Mesh& mesh, int c) {
+  const CellType t = mesh.cell_type(c);
+  const int d = cell_dim(t);
+  double x[kMaxCellNodes * 3], A[9];
+  gather(mesh, c, x);
+  double volume = 0;
+  for (const SamplePoint& p : sample_points(t, SampleRule::kGauss)) {
+    cell_jacobian(t, x, mesh.space_dim, p.xi, A);
+    volume += p.weight * det(A, d);
+  }
+  volume *= reference_volume(t);
+  const double h = std::pow(std::abs(volume) / ideal_volume(t), 1.0 / d);
+  return volume < 0 ? -h : h;
+}
+
+Status build_targets(const Mesh& mesh, SampleRule rule, const TargetSpec& spec,
+                     std::vector<double>* W) {
+  const int d = mesh.dim();
+  if (d < 2) return Status::Failure("targets need a mesh of 2D or 3D elements");
+  if (mesh.space_dim != d)
+    return Status::Failure("targets for surface meshes (2D cells in 3D) need a geometry");
+  const Mesh& ref = spec.reference ? *spec.reference : mesh;
+  if (spec.type == TargetType::kReference && !same_topology(mesh, ref))
+    return Status::Failure("reference mesh: its vertices and cells do not match the mesh's");
+
+  // One size for the whole mesh where the target asks for it.
+  double h_all = 1.0;
+  if (spec.type == TargetType::kIdealEqualSize) {
+    double sum = 0;
+    int n = 0;
+    for (int c = 0; c < mesh.num_cells(); ++c)
+      if (mesh.is_element(c, d)) {
+        sum += std::abs(cell_equivalent_edge(mesh, c));
+        ++n;
+      }
+    h_all = n ? sum / n : 1.0;
+  } else if (spec.type == TargetType::kMeanEdgeLength) {
+    const auto edges = mesh_edges(mesh);
+    double sum = 0;
+    for (const auto& e : edges) {
+      double l2 = 0;
+      for (int a = 0; a < mesh.space_dim; ++a) {
+        const double t = mesh.vertex(e[1])[a] - mesh.vertex(e[0])[a];
+        l2 += t * t;
+      }
+      sum += std::sqrt(l2);
+    }
+    h_all = edges.empty() ? 1.0 : sum / edges.size();
+  }
+  const DataArray* field = nullptr;
+  if (spec.type == TargetType::kIdealSizeField) {
+    for (const DataArray& a : mesh.point_data)
+      if (a.name == spec.size_field && a.components == 1) field = &a;
+    if (!field)
+      return Status::Failure("size field '" + spec.size_field +
+                             "': no 1-component point data array of that name");
+  }
+  if (!(h_all > 0) || !std::isfinite(h_all))
+    return Status::Failure("target size is not positive (degenerate mesh?)");
+
+  std::vector<double> out;
+  double x[kMaxCellNodes * 3], N[kMaxCellNodes];
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!mesh.is_element(c, d)) continue;
+    const CellType t = mesh.cell_type(c);
+    double ideal[9];
+    ideal_jacobian(t, ideal);
+    double h_cell = h_all;
+    if (spec.type == TargetType::kIdealLocalSize) {
+      h_cell = std::abs(cell_equivalent_edge(mesh, c));
+      if (!(h_cell > 0))
+        return Status::Failure("cell " + std::to_string(c) + ": zero volume, no local size");
+    }
+    if (spec.type == TargetType::kReference) gather(ref, c, x);
+    for (const SamplePoint& p : sample_points(t, rule)) {
+      double w[9];
+      if (spec.type == TargetType::kReference) {
+        cell_jacobian(t, x, ref.space_dim, p.xi, w);
+        const double dw = det(w, d);
+        if (!(std::abs(dw) > 0) || !std::isfinite(dw))
+          return Status::Failure("cell " + std::to_string(c) +
+                                 ": reference Jacobian is singular at a sample point");
+      } else {
+        double h = h_cell;
+        if (field) {
+          shape_values(t, p.xi, N);
+          h = 0;
+          for (int i = 0; i < mesh.cell_size(c); ++i) h += N[i] * field->values[mesh.cell(c)[i]];
+          if (!(h > 0))
+            return Status::Failure("size field '" + spec.size_field + "' is not positive in cell " +
+                                   std::to_string(c));
+        }
+        for (int i = 0; i < d * d; ++i) w[i] = h * ideal[i];
+      }
+      out.insert(out.end(), w, w + d * d);
+    }
+  }
+  W->swap(out);
+  return Status::Ok();
+}
+
+}  // namespace tmop
