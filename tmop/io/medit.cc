@@ -97,7 +97,7 @@ class MeditReader {
         s_.check_count(static_cast<std::uint64_t>(n), 2 * values, "row");
         for (std::int64_t i = 0; i < n * values; ++i) s_.token();
       } else {
-        s_.fail_at(p, "unknown keyword '" + std::string(t.substr(0, 32)) + "'");
+        s_.fail_at(p, "unknown keyword '" + printable(t) + "'");
       }
       if (!have_version) s_.fail_at(p, "not a Medit file: expected MeshVersionFormatted first");
     }

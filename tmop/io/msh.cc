@@ -58,8 +58,7 @@ class MshReader {
       } else if (t.size() > 1 && t[0] == '$') {
         skip_section(t, start);
       } else {
-        s_.fail_at(start, "expected a $Section header, got '" +
-                              std::string(t.substr(0, std::min<std::size_t>(t.size(), 32))) + "'");
+        s_.fail_at(start, "expected a $Section header, got '" + printable(t) + "'");
       }
     }
     if (!have_nodes) s_.fail("no $Nodes section");
@@ -100,8 +99,7 @@ class MshReader {
     if (!s_.try_token(&t)) s_.fail("unexpected end of file, expected " + std::string(what));
     if (t != what)
       s_.fail_at(p + (s_.pos() - p - t.size()),
-                 "expected " + std::string(what) + ", got '" +
-                     std::string(t.substr(0, std::min<std::size_t>(t.size(), 32))) + "'");
+                 "expected " + std::string(what) + ", got '" + printable(t) + "'");
   }
 
   void skip_section(std::string_view name, std::size_t start) {

@@ -26,6 +26,14 @@ std::string read_file(const std::string& path) {
   return data;
 }
 
+std::string printable(std::string_view token) {
+  std::string out(token.substr(0, 32));
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+  if (token.size() > 32) out += "...";
+  return out;
+}
+
 void Scanner::skip_space() {
   while (pos_ < data_.size() && is_space(data_[pos_])) ++pos_;
 }
@@ -61,8 +69,7 @@ std::int64_t Scanner::integer(std::int64_t lo, std::int64_t hi, const char* what
   auto r = std::from_chars(b, e, v);
   if (r.ec != std::errc() || (r.ptr < e && !is_space(*r.ptr))) {
     std::string_view t = token();
-    fail_at(start, std::string("expected ") + what + ", got '" +
-                       std::string(t.substr(0, std::min<std::size_t>(t.size(), 32))) + "'");
+    fail_at(start, std::string("expected ") + what + ", got '" + printable(t) + "'");
   }
   if (v < lo || v > hi)
     fail_at(start, std::string(what) + " " + std::to_string(v) + " out of range " +
@@ -83,8 +90,7 @@ double Scanner::real(const char* what) {
   if (r.ec == std::errc::result_out_of_range) fail_at(start, std::string(what) + " out of range");
   if (r.ec != std::errc() || (r.ptr < e && !is_space(*r.ptr))) {
     std::string_view t = token();
-    fail_at(start, std::string("expected ") + what + ", got '" +
-                       std::string(t.substr(0, std::min<std::size_t>(t.size(), 32))) + "'");
+    fail_at(start, std::string("expected ") + what + ", got '" + printable(t) + "'");
   }
   if (!std::isfinite(v)) fail_at(start, std::string(what) + " is not finite");
   pos_ = static_cast<std::size_t>(r.ptr - data_.data());
@@ -127,7 +133,8 @@ const char* Scanner::bytes(std::size_t n, const char* what) {
 }
 
 void Scanner::check_count(std::uint64_t count, std::size_t min_bytes_each, const char* what) const {
-  if (count > remaining() / std::max<std::size_t>(min_bytes_each, 1))
+  // The last item needs no separator after it, hence the + 1.
+  if (count > (remaining() + 1) / std::max<std::size_t>(min_bytes_each, 1))
     fail(std::string("declared ") + what + " count " + std::to_string(count) +
          " cannot fit in the " + std::to_string(remaining()) + " bytes left in the file");
 }

@@ -75,6 +75,9 @@ class Scanner {
   std::size_t pos_ = 0;
 };
 
+// At most 32 characters of a token for an error message, non-printable bytes as '?'.
+std::string printable(std::string_view token);
+
 inline bool is_space(char c) {
   return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
 }

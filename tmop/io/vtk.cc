@@ -95,9 +95,11 @@ class VtkReader {
         mesh_->coords = std::move(xyz);
         have_points = true;
       } else if (t == "CELLS") {
+        cells_pos_ = p;
         read_cells(&offsets, &conn);
         have_cells = true;
       } else if (t == "CELL_TYPES") {
+        types_pos_ = p;
         const std::int64_t n = s_.integer(0, kMaxInt32 - 1, "number of cell types");
         if (binary_) s_.skip_line();
         check_count(n, "int");
@@ -113,7 +115,7 @@ class VtkReader {
       } else if (t == "METADATA") {
         skip_metadata();
       } else {
-        s_.fail_at(p, "unexpected keyword '" + std::string(t.substr(0, 32)) + "'");
+        s_.fail_at(p, "unexpected keyword '" + printable(t) + "'");
       }
     }
     if (!have_points) s_.fail("no POINTS section");
@@ -135,15 +137,13 @@ class VtkReader {
     const std::size_t p = (s_.skip_space(), s_.pos());
     std::string_view t;
     if (!s_.try_token(&t)) s_.fail(std::string("unexpected end of file, expected ") + k);
-    if (t != k)
-      s_.fail_at(p, std::string("expected ") + k + ", got '" + std::string(t.substr(0, 32)) + "'");
+    if (t != k) s_.fail_at(p, std::string("expected ") + k + ", got '" + printable(t) + "'");
   }
 
   std::string_view value_type() {
     const std::size_t p = (s_.skip_space(), s_.pos());
     const std::string_view type = s_.token();
-    if (type_size(type) == 0)
-      s_.fail_at(p, "unknown data type '" + std::string(type.substr(0, 32)) + "'");
+    if (type_size(type) == 0) s_.fail_at(p, "unknown data type '" + printable(type) + "'");
     if (binary_) s_.skip_line();
     return type;
   }
@@ -253,18 +253,20 @@ class VtkReader {
     for (std::size_t c = 0; c < ncells; ++c) {
       CellType type;
       if (!cell_type_from_vtk(static_cast<int>(types[c]), &type))
-        s_.fail("cell " + std::to_string(c) + ": unsupported VTK cell type " +
-                std::to_string(types[c]));
+        s_.fail_at(types_pos_, "cell " + std::to_string(c) + ": unsupported VTK cell type " +
+                                   std::to_string(types[c]));
       const std::int64_t b = offsets[c], e = offsets[c + 1];
       if (e - b != cell_num_nodes(type) || b < 0 || e > static_cast<std::int64_t>(conn.size()))
-        s_.fail("cell " + std::to_string(c) + " (" + cell_name(type) + ") has " +
-                std::to_string(e - b) + " nodes, expected " + std::to_string(cell_num_nodes(type)));
+        s_.fail_at(cells_pos_, "cell " + std::to_string(c) + " (" + cell_name(type) + ") has " +
+                                   std::to_string(e - b) + " nodes, expected " +
+                                   std::to_string(cell_num_nodes(type)));
       const int* p = gmsh_index_of_vtk_node(type);
       for (int i = 0; i < cell_num_nodes(type); ++i) {
         const std::int64_t v = conn[static_cast<std::size_t>(b + i)];
         if (v < 0 || v >= nv)
-          s_.fail("cell " + std::to_string(c) + " refers to point " + std::to_string(v) +
-                  ", out of range 0.." + std::to_string(nv - 1));
+          s_.fail_at(cells_pos_, "cell " + std::to_string(c) + " refers to point " +
+                                     std::to_string(v) + ", out of range 0.." +
+                                     std::to_string(nv - 1));
         nodes[p[i]] = static_cast<std::int32_t>(v);
       }
       mesh_->add_cell(type, nodes);
@@ -292,8 +294,7 @@ class VtkReader {
         const std::string name = decode_name(s_.token());
         const std::size_t tp = (s_.skip_space(), s_.pos());
         const std::string_view type = s_.token();
-        if (type_size(type) == 0)
-          s_.fail_at(tp, "unknown data type '" + std::string(type.substr(0, 32)) + "'");
+        if (type_size(type) == 0) s_.fail_at(tp, "unknown data type '" + printable(type) + "'");
         // Optional component count on the same line.
         int comps = 1;
         const std::string_view rest = s_.line();
@@ -382,6 +383,8 @@ class VtkReader {
   Scanner s_;
   Mesh* mesh_;
   bool binary_ = false;
+  std::size_t cells_pos_ = 0;  // where CELLS / CELL_TYPES start: cell errors point there
+  std::size_t types_pos_ = 0;
 };
 
 class VtkWriter {

@@ -13,6 +13,7 @@
 #include <zlib.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <vector>
@@ -89,6 +90,13 @@ int scalar_size(std::string_view t) {
   if (t == "Int32" || t == "UInt32" || t == "Float32") return 4;
   if (t == "Int64" || t == "UInt64" || t == "Float64") return 8;
   return 0;
+}
+
+// A number for a message: integers without decimals.
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.17g", v);
+  return buf;
 }
 
 struct Array {
@@ -268,12 +276,14 @@ class VtuReader {
           }
           case kCells:
             if (nm == "connectivity") {
+              conn_pos_ = t.start;
               conn = read_array(t, -1).values;
               have_conn = true;
             } else if (nm == "offsets") {
               offsets = read_array(t, nc).values;
               have_offsets = true;
             } else if (nm == "types") {
+              types_pos_ = t.start;
               types = read_array(t, nc).values;
               have_types = true;
             } else {
@@ -489,18 +499,19 @@ class VtuReader {
       CellType type;
       const double vt = types[static_cast<std::size_t>(c)];
       if (!cell_type_from_vtk(static_cast<int>(vt), &type) || vt != std::floor(vt))
-        s_.fail("cell " + std::to_string(c) + ": unsupported VTK cell type " + std::to_string(vt));
+        s_.fail_at(types_pos_,
+                   "cell " + std::to_string(c) + ": unsupported VTK cell type " + num(vt));
       const double end = offsets[static_cast<std::size_t>(c)];
       if (end - begin != cell_num_nodes(type) || end > static_cast<double>(conn.size()))
-        s_.fail("cell " + std::to_string(c) + " (" + cell_name(type) + "): offsets give " +
-                std::to_string(end - begin) + " nodes, expected " +
-                std::to_string(cell_num_nodes(type)));
+        s_.fail_at(conn_pos_, "cell " + std::to_string(c) + " (" + cell_name(type) +
+                                  "): offsets give " + num(end - begin) + " nodes, expected " +
+                                  std::to_string(cell_num_nodes(type)));
       const int* p = gmsh_index_of_vtk_node(type);
       for (int i = 0; i < cell_num_nodes(type); ++i) {
         const double v = conn[static_cast<std::size_t>(begin + i)];
         if (v < 0 || v >= static_cast<double>(nv) || v != std::floor(v))
-          s_.fail("cell " + std::to_string(c) + " refers to point " + std::to_string(v) +
-                  ", out of range 0.." + std::to_string(nv - 1));
+          s_.fail_at(conn_pos_, "cell " + std::to_string(c) + " refers to point " + num(v) +
+                                    ", out of range 0.." + std::to_string(nv - 1));
         nodes[p[i]] = static_cast<std::int32_t>(v);
       }
       mesh_->add_cell(type, nodes);
@@ -517,6 +528,8 @@ class VtuReader {
   bool appended_raw_ = true;
   std::size_t appended_ = 0;
   std::size_t appended_start_ = 0;
+  std::size_t conn_pos_ = 0;  // connectivity / types DataArray tags: cell errors point there
+  std::size_t types_pos_ = 0;
 };
 
 class VtuWriter {

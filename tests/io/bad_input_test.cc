@@ -1,0 +1,134 @@
+// Every file under tests/data/bad/ is broken in one way (its name says how). Reading must fail
+// without crashing, with one line "FILE:LINE: what" or "FILE:byte N: what".
+#include <dirent.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <regex>
+
+#include "io_test_util.h"
+#include "tmop/io/mesh_io.h"
+
+namespace tmop {
+namespace {
+
+std::vector<std::string> corpus() {
+  const std::string dir = std::string(TMOP_SOURCE_DIR) + "/tests/data/bad";
+  std::vector<std::string> files;
+  if (DIR* d = opendir(dir.c_str())) {
+    while (dirent* e = readdir(d)) {
+      const std::string name = e->d_name;
+      if (name[0] == '.' || name.size() < 3 || name.substr(name.size() - 3) == ".py") continue;
+      files.push_back(dir + "/" + name);
+    }
+    closedir(d);
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(BadInput, EveryCorpusFileFailsWithALocatedOneLineMessage) {
+  const std::vector<std::string> files = corpus();
+  ASSERT_GE(files.size(), 60u);
+  const std::regex located("(\\d+|byte \\d+): \\S.*");
+  for (const std::string& path : files) {
+    Mesh mesh;
+    mesh.space_dim = 3;
+    const Status s = read_mesh(path, &mesh);
+    ASSERT_FALSE(s.ok()) << path << " was accepted";
+    const std::string& m = s.message();
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    ASSERT_EQ(m.compare(0, path.size() + 1, path + ":"), 0) << m;
+    const std::string rest = m.substr(path.size() + 1);
+    if (path.find("unknown_extension") != std::string::npos) {
+      EXPECT_NE(rest.find("unknown mesh file extension"), std::string::npos) << m;
+    } else {
+      EXPECT_TRUE(std::regex_match(rest, located)) << m;
+    }
+    // A failed read leaves an empty mesh.
+    EXPECT_EQ(mesh.num_vertices(), 0) << path;
+    EXPECT_EQ(mesh.num_cells(), 0) << path;
+  }
+}
+
+// Spot checks that the location and the diagnosis are the right ones.
+TEST(BadInput, MessagesNameTheProblemAndItsPlace) {
+  const std::string dir = std::string(TMOP_SOURCE_DIR) + "/tests/data/bad/";
+  struct Expect {
+    const char* file;
+    const char* text;
+  };
+  const Expect expects[] = {
+      {"nan_coordinate.msh", "nan_coordinate.msh:7: coordinate is not finite"},
+      {"inf_coordinate.msh", "inf_coordinate.msh:8: coordinate out of range"},
+      {"unknown_element_type.msh", "unknown_element_type.msh:12: unsupported Gmsh element type 99"},
+      {"node_out_of_range.msh", "node_out_of_range.msh:12: node tag 9 is not defined"},
+      {"huge_node_count.msh", "huge_node_count.msh:5: declared node count 2000000000"},
+      {"wrong_endianness22.msh", "wrong_endianness22.msh:byte 20: endianness marker"},
+      {"wrong_datasize22.msh", "wrong_datasize22.msh:2: binary data size 4"},
+      {"mixed_dimensions41.msh", "mixed_dimensions41.msh:18: element type tet4 (dimension 3)"},
+      {"mixed_dimensions.mesh", "mixed_dimensions.mesh:9: Tetrahedra (3D cells) in a Dimension 2"},
+      {"index_out_of_range.mesh", "index_out_of_range.mesh:10: vertex index 4 out of range 1..3"},
+      {"unknown_cell_type.vtk", "unknown_cell_type.vtk:9: cell 0: unsupported VTK cell type 42"},
+      {"huge_point_count.vtk", "huge_point_count.vtk:5: declared value count 2999999997"},
+      {"wrong_byte_count.vtu", "declares 1000 bytes"},
+      {"truncated_binary22.msh", "truncated_binary22.msh:byte "},
+  };
+  for (const Expect& e : expects) {
+    Mesh mesh;
+    const Status s = read_mesh(dir + e.file, &mesh);
+    ASSERT_FALSE(s.ok()) << e.file;
+    EXPECT_NE(s.message().find(e.text), std::string::npos) << s.message();
+  }
+}
+
+TEST(BadInput, MissingFileAndDirectory) {
+  Mesh mesh;
+  Status s = read_mesh("/nonexistent/dir/mesh.msh", &mesh);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.message(), "/nonexistent/dir/mesh.msh: cannot open for reading");
+  s = read_mesh(std::string(TMOP_SOURCE_DIR) + "/tests/data/bad", &mesh);
+  EXPECT_FALSE(s.ok());
+}
+
+// Every prefix of a valid binary and ASCII file must be rejected cleanly (or, for prefixes that
+// happen to be complete files, read); never crash.
+TEST(BadInput, EveryTruncationOfValidFilesIsHandled) {
+  const std::string dir = test::temp_dir();
+  const Mesh m = test::make_mesh({CellType::kTet4, CellType::kHex8, CellType::kTri3});
+  struct Case {
+    const char* name;
+    bool binary;
+    int version;
+  };
+  for (const Case& c : {Case{"a.msh", false, 22}, Case{"b.msh", true, 22}, Case{"c.msh", true, 41},
+                        Case{"d.msh", false, 41}, Case{"e.vtk", true, 0}, Case{"f.vtu", true, 0},
+                        Case{"g.mesh", false, 0}}) {
+    WriteOptions o;
+    o.binary = c.binary;
+    if (c.version) o.msh_version = c.version;
+    const std::string full = dir + "/" + c.name;
+    ASSERT_TRUE(write_mesh(full, m, o).ok());
+    std::FILE* f = std::fopen(full.c_str(), "rb");
+    std::string bytes(1 << 16, '\0');
+    bytes.resize(std::fread(&bytes[0], 1, bytes.size(), f));
+    std::fclose(f);
+    const std::string cut = dir + "/cut_" + c.name;
+    int failures = 0;
+    for (std::size_t n = 0; n < bytes.size(); n += 7) {
+      f = std::fopen(cut.c_str(), "wb");
+      std::fwrite(bytes.data(), 1, n, f);
+      std::fclose(f);
+      Mesh out;
+      const Status s = read_mesh(cut, &out);
+      if (!s.ok()) {
+        ++failures;
+        EXPECT_EQ(s.message().compare(0, cut.size() + 1, cut + ":"), 0) << s.message();
+      }
+    }
+    EXPECT_GT(failures, static_cast<int>(bytes.size() / 7 * 9 / 10)) << c.name;
+  }
+}
+
+}  // namespace
+}  // namespace tmop
