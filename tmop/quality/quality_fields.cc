@@ -1,5 +1,7 @@
 #include "tmop/quality/quality_fields.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <utility>
@@ -27,8 +29,13 @@ void add_quality_fields(const QualityReport& report, Mesh* mesh) {
     std::abort();
   }
   put("inverted", std::vector<double>(report.inverted.begin(), report.inverted.end()), mesh);
-  put("certified", report.certified, mesh);
-  for (const QualityMeasure* m : report.measures()) put(m->key, m->values, mesh);
+  // Arrays that apply to no element (angles of a tet mesh) would only add all-NaN columns.
+  auto any = [](const std::vector<double>& v) {
+    return std::any_of(v.begin(), v.end(), [](double x) { return !std::isnan(x); });
+  };
+  if (any(report.certified)) put("certified", report.certified, mesh);
+  for (const QualityMeasure* m : report.measures())
+    if (any(m->values)) put(m->key, m->values, mesh);
 }
 
 }  // namespace tmop

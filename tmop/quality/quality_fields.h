@@ -4,8 +4,10 @@
 // "certified" (1/0, NaN without certificate) and every measure under its JSON key
 // ("mean_ratio", "scaled_jacobian", "condition_number", "min_det", "min_angle_deg",
 // "max_angle_deg", "min_dihedral_deg", "max_dihedral_deg", "min_edge_length", "max_edge_length",
-// "edge_ratio"). NaN marks cells a measure does not apply to; the condition number of an inverted
-// cell is +inf. Arrays with these names already in cell_data are replaced.
+// "edge_ratio"). Arrays that apply to no element are left out (angles of a volume mesh); in the
+// others NaN marks cells the measure does not apply to (lower-dimensional cells, other types of a
+// mixed mesh) and the condition number of an inverted cell is +inf. Arrays with these names
+// already in cell_data are replaced.
 #ifndef TMOP_QUALITY_QUALITY_FIELDS_H_
 #define TMOP_QUALITY_QUALITY_FIELDS_H_
 
