@@ -130,5 +130,53 @@ TEST(BadInput, EveryTruncationOfValidFilesIsHandled) {
   }
 }
 
+// Random byte corruptions of valid files: never a crash, and failures are located messages.
+TEST(BadInput, RandomByteCorruptionsAreHandled) {
+  const std::string dir = test::temp_dir();
+  const Mesh m = test::make_mesh({CellType::kTet10, CellType::kWedge6, CellType::kQuad4});
+  std::uint64_t state = 12345;
+  auto rnd = [&state]() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<std::uint32_t>(state >> 33);
+  };
+  struct Case {
+    const char* name;
+    bool binary;
+    int version;
+  };
+  for (const Case& c : {Case{"a.msh", false, 22}, Case{"b.msh", true, 22}, Case{"c.msh", true, 41},
+                        Case{"d.msh", false, 41}, Case{"e.vtk", true, 0}, Case{"f.vtk", false, 0},
+                        Case{"g.vtu", true, 0}, Case{"h.vtu", false, 0}, Case{"i.mesh", false, 0},
+                        Case{"j.off", false, 0}}) {
+    WriteOptions o;
+    o.binary = c.binary;
+    if (c.version) o.msh_version = c.version;
+    const std::string full = dir + "/" + c.name;
+    const Mesh& src = std::string(c.name).find(".off") != std::string::npos
+                          ? test::make_mesh({CellType::kTri3, CellType::kQuad4})
+                          : m;
+    ASSERT_TRUE(write_mesh(full, src, o).ok());
+    std::FILE* f = std::fopen(full.c_str(), "rb");
+    std::string bytes(1 << 16, '\0');
+    bytes.resize(std::fread(&bytes[0], 1, bytes.size(), f));
+    std::fclose(f);
+    const std::string bad = dir + "/bad_" + c.name;
+    for (int trial = 0; trial < 150; ++trial) {
+      std::string b = bytes;
+      const int flips = 1 + rnd() % 4;
+      for (int k = 0; k < flips; ++k) b[rnd() % b.size()] = static_cast<char>(rnd() % 256);
+      f = std::fopen(bad.c_str(), "wb");
+      std::fwrite(b.data(), 1, b.size(), f);
+      std::fclose(f);
+      Mesh out;
+      const Status s = read_mesh(bad, &out);
+      if (!s.ok()) {
+        EXPECT_EQ(s.message().compare(0, bad.size() + 1, bad + ":"), 0) << s.message();
+        EXPECT_EQ(s.message().find('\n'), std::string::npos) << s.message();
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tmop
