@@ -174,6 +174,15 @@ class VtkReader {
   void read_reals(std::int64_t n, std::string_view type, std::vector<double>* out,
                   const char* what) {
     out->resize(static_cast<std::size_t>(n));
+    if (binary_ && type == "double") {  // the common case, without per-value type dispatch
+      for (std::int64_t i = 0; i < n; ++i) {
+        const std::size_t p = s_.pos();
+        const double v = s_.binary<double>(true, what);
+        if (!std::isfinite(v)) s_.fail_byte(p, std::string(what) + " is not finite");
+        (*out)[static_cast<std::size_t>(i)] = v;
+      }
+      return;
+    }
     for (std::int64_t i = 0; i < n; ++i) {
       const std::size_t p = s_.pos();
       const double v = binary_ ? binary_value(type, what) : s_.real(what);
@@ -185,6 +194,11 @@ class VtkReader {
   void read_ints(std::int64_t n, std::string_view type, std::vector<std::int64_t>* out,
                  const char* what) {
     out->resize(static_cast<std::size_t>(n));
+    if (binary_ && type == "int") {  // the common case, without per-value type dispatch
+      for (std::int64_t i = 0; i < n; ++i)
+        (*out)[static_cast<std::size_t>(i)] = s_.binary<std::int32_t>(true, what);
+      return;
+    }
     for (std::int64_t i = 0; i < n; ++i) {
       if (binary_) {
         const std::size_t p = s_.pos();

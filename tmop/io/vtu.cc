@@ -442,50 +442,43 @@ class VtuReader {
                                  std::to_string(size));
     const std::size_t n = bytes.size() / size;
     a->values.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      char b[8];
-      std::memcpy(b, bytes.data() + i * size, size);
-      if (swap_)
-        for (int k = 0; k < size / 2; ++k) std::swap(b[k], b[size - 1 - k]);
-      double v = 0;
-      if (type == "Float64") {
-        std::memcpy(&v, b, 8);
-      } else if (type == "Float32") {
-        float x;
-        std::memcpy(&x, b, 4);
-        v = x;
-      } else if (type == "Int8") {
-        v = static_cast<std::int8_t>(b[0]);
-      } else if (type == "UInt8") {
-        v = static_cast<std::uint8_t>(b[0]);
-      } else if (type == "Int16") {
-        std::int16_t x;
-        std::memcpy(&x, b, 2);
-        v = x;
-      } else if (type == "UInt16") {
-        std::uint16_t x;
-        std::memcpy(&x, b, 2);
-        v = x;
-      } else if (type == "Int32") {
-        std::int32_t x;
-        std::memcpy(&x, b, 4);
-        v = x;
-      } else if (type == "UInt32") {
-        std::uint32_t x;
-        std::memcpy(&x, b, 4);
-        v = x;
-      } else if (type == "Int64") {
-        std::int64_t x;
-        std::memcpy(&x, b, 8);
-        v = static_cast<double>(x);
-      } else {
-        std::uint64_t x;
-        std::memcpy(&x, b, 8);
-        v = static_cast<double>(x);
-      }
+    // Dispatch on the type once, not per value: this loop is the whole cost of binary .vtu.
+    if (type == "Float64")
+      convert<double>(bytes, a);
+    else if (type == "Float32")
+      convert<float>(bytes, a);
+    else if (type == "Int8")
+      convert<std::int8_t>(bytes, a);
+    else if (type == "UInt8")
+      convert<std::uint8_t>(bytes, a);
+    else if (type == "Int16")
+      convert<std::int16_t>(bytes, a);
+    else if (type == "UInt16")
+      convert<std::uint16_t>(bytes, a);
+    else if (type == "Int32")
+      convert<std::int32_t>(bytes, a);
+    else if (type == "UInt32")
+      convert<std::uint32_t>(bytes, a);
+    else if (type == "Int64")
+      convert<std::int64_t>(bytes, a);
+    else
+      convert<std::uint64_t>(bytes, a);
+    for (double v : a->values)
       if (!std::isfinite(v))
         s_.fail_byte(file_pos, "DataArray '" + a->name + "' holds a non-finite value");
-      a->values[i] = v;
+  }
+
+  template <typename T>
+  void convert(const std::string& bytes, Array* a) const {
+    const std::size_t n = bytes.size() / sizeof(T);
+    for (std::size_t i = 0; i < n; ++i) {
+      char b[sizeof(T)];
+      std::memcpy(b, bytes.data() + i * sizeof(T), sizeof(T));
+      if (swap_)
+        for (std::size_t k = 0; k < sizeof(T) / 2; ++k) std::swap(b[k], b[sizeof(T) - 1 - k]);
+      T x;
+      std::memcpy(&x, b, sizeof(T));
+      a->values[i] = static_cast<double>(x);
     }
   }
 
