@@ -87,9 +87,22 @@ std::vector<std::array<std::int32_t, 2>> mesh_edges(const Mesh& mesh) {
   return edges;
 }
 
-std::vector<BoundaryFacet> boundary_facets(const Mesh& mesh) {
+namespace {
+
+// Matches the facets of the elements: for every facet instance (element facets in cell order,
+// then local order) its cell, local index, and how many instances share its corner set
+// (1 = boundary, 2 = interior), with the partner instance when there are exactly two.
+struct FacetMatching {
+  std::vector<std::int32_t> cell;
+  std::vector<std::int8_t> local;
+  std::vector<std::uint8_t> multiplicity;  // saturates at 255
+  std::vector<std::uint32_t> partner;      // valid when multiplicity == 2
+};
+
+FacetMatching match_facets(const Mesh& mesh) {
+  FacetMatching out;
   const int d = mesh.dim();
-  if (d == 0) return {};
+  if (d == 0) return out;
   const int nv = mesh.num_vertices();
 
   // Calls fn(instance, cell, local, sorted key) for every facet of every element. The key is the
@@ -122,10 +135,14 @@ std::vector<BoundaryFacet> boundary_facets(const Mesh& mesh) {
       [&](std::uint32_t, int, int, const std::int32_t* key) { ++offsets[key[0] + 1]; });
   for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
   std::vector<Entry> entries(total);
+  out.cell.resize(total);
+  out.local.resize(total);
   {
     std::vector<std::int64_t> fill(offsets.begin(), offsets.end() - 1);
-    for_each_facet([&](std::uint32_t inst, int, int, const std::int32_t* key) {
+    for_each_facet([&](std::uint32_t inst, int c, int f, const std::int32_t* key) {
       entries[fill[key[0]]++] = Entry{{key[1], key[2], key[3]}, inst};
+      out.cell[inst] = c;
+      out.local[inst] = static_cast<std::int8_t>(f);
     });
   }
   auto less = [](const Entry& a, const Entry& b) {
@@ -136,7 +153,8 @@ std::vector<BoundaryFacet> boundary_facets(const Mesh& mesh) {
   auto same = [](const Entry& a, const Entry& b) {
     return a.rest[0] == b.rest[0] && a.rest[1] == b.rest[1] && a.rest[2] == b.rest[2];
   };
-  std::vector<char> single(total, 0);
+  out.multiplicity.assign(total, 0);
+  out.partner.assign(total, 0);
   for (int v = 0; v < nv; ++v) {
     Entry* begin = entries.data() + offsets[v];
     Entry* end = entries.data() + offsets[v + 1];
@@ -144,21 +162,43 @@ std::vector<BoundaryFacet> boundary_facets(const Mesh& mesh) {
     for (Entry* e = begin; e != end;) {
       Entry* run = e + 1;
       while (run != end && same(*run, *e)) ++run;
-      if (run == e + 1) single[e->inst] = 1;
+      const std::uint8_t m = static_cast<std::uint8_t>(std::min<std::ptrdiff_t>(run - e, 255));
+      for (Entry* r = e; r != run; ++r) out.multiplicity[r->inst] = m;
+      if (m == 2) {
+        out.partner[e->inst] = (e + 1)->inst;
+        out.partner[(e + 1)->inst] = e->inst;
+      }
       e = run;
     }
   }
+  return out;
+}
 
+}  // namespace
+
+std::vector<BoundaryFacet> boundary_facets(const Mesh& mesh) {
+  const FacetMatching m = match_facets(mesh);
   std::vector<BoundaryFacet> out;
-  for_each_facet([&](std::uint32_t inst, int c, int local, const std::int32_t*) {
-    if (!single[inst]) return;
+  for (std::size_t inst = 0; inst < m.cell.size(); ++inst) {
+    if (m.multiplicity[inst] != 1) continue;
     BoundaryFacet f;
-    f.cell = c;
-    f.local = static_cast<std::int8_t>(local);
+    f.cell = m.cell[inst];
+    f.local = m.local[inst];
     for (int k = 0; k < 4; ++k) f.corners[k] = -1;
-    f.num_corners = static_cast<std::int8_t>(FacetCorners(mesh, c, local, f.corners));
+    f.num_corners = static_cast<std::int8_t>(FacetCorners(mesh, f.cell, f.local, f.corners));
     out.push_back(f);
-  });
+  }
+  return out;
+}
+
+std::vector<InteriorFacet> interior_facets(const Mesh& mesh) {
+  const FacetMatching m = match_facets(mesh);
+  std::vector<InteriorFacet> out;
+  for (std::size_t inst = 0; inst < m.cell.size(); ++inst) {
+    if (m.multiplicity[inst] != 2 || m.partner[inst] < inst) continue;
+    const std::uint32_t other = m.partner[inst];
+    out.push_back(InteriorFacet{{m.cell[inst], m.cell[other]}, {m.local[inst], m.local[other]}});
+  }
   return out;
 }
 

@@ -35,6 +35,16 @@ struct BoundaryFacet {
 // are interior.
 std::vector<BoundaryFacet> boundary_facets(const Mesh& mesh);
 
+// A facet shared by exactly two elements: the cells and their local facet indices.
+struct InteriorFacet {
+  std::int32_t cell[2];
+  std::int8_t local[2];
+};
+
+// Ordered by the first side's (cell, local). Non-manifold facets (3+ elements) are in neither
+// list.
+std::vector<InteriorFacet> interior_facets(const Mesh& mesh);
+
 // num_vertices() entries: 1 for every node on a boundary facet, including the mid-edge nodes and
 // (hex27) face nodes of quadratic cells that lie on that facet; 0 otherwise.
 std::vector<char> boundary_vertex_mask(const Mesh& mesh);

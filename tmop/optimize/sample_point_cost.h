@@ -31,6 +31,8 @@ class SamplePointCost final : public ceres::CostFunction {
 
   // Multiplies every term's weight by m >= 0 (the power-mean reweighting of stage.cc).
   void set_weight_multiplier(double m);
+  // Replaces term t's metric by one with the same residual count (the untangler's eps schedule).
+  void set_metric(int t, const Metric* metric) { terms_[t].metric = metric; }
   // Exact sum_t c_t mu_t at the given node coordinates (without the multiplier).
   double value(double const* const* x) const;
 

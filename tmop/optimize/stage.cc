@@ -13,6 +13,7 @@
 
 #include "tmop/element/shape.h"
 #include "tmop/mesh/topology.h"
+#include "tmop/metric/untangle.h"
 #include "tmop/optimize/sample_point_cost.h"
 #include "tmop/target/ideal_element.h"
 
@@ -65,6 +66,23 @@ void compute_T(int n, int d, const Mesh& mesh, const std::int32_t* nodes, const 
     for (int a = 0; a < d; ++a)
       for (int b = 0; b < d; ++b) T[a * d + b] += x[a] * G[i * d + b];
   }
+}
+
+// min det T over the sample points of term 0, and the cells where it is <= 0.
+double min_target_det(const Mesh& mesh, const std::vector<int>& point_cell,
+                      const std::vector<double>& G, int stride, std::vector<int>* bad) {
+  const int d = mesh.dim();
+  double worst = std::numeric_limits<double>::infinity();
+  if (bad) bad->clear();
+  for (std::size_t p = 0; p < point_cell.size(); ++p) {
+    const int c = point_cell[p];
+    double T[9];
+    compute_T(mesh.cell_size(c), d, mesh, mesh.cell(c), G.data() + p * stride, T);
+    const double det = det_d(T, d);
+    worst = std::min(worst, det);
+    if (bad && !(det > 0) && (bad->empty() || bad->back() != c)) bad->push_back(c);
+  }
+  return worst;
 }
 
 // Shape quality of T: d det(T)^(2/d) / |T|^2, negative when det T < 0.
@@ -426,16 +444,30 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   result->initial_objective =
       exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements);
 
-  if (barrier && before.inverted > 0) {
-    std::vector<int> bad;
-    for (std::size_t p = 0; p < P; ++p) {
-      double T[9];
-      const int c = point_cell[p];
-      compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), G[0].data() + p * stride, T);
-      if (!(det_d(T, d) > 0) && (bad.empty() || bad.back() != c)) bad.push_back(c);
-    }
+  std::vector<int> bad;
+  result->min_det_before = min_target_det(*mesh, point_cell, G[0], stride, &bad);
+  if (barrier && !bad.empty())
     return fail("barrier metric on an inverted mesh (untangle first): inverted cells " +
                 list_cells(bad));
+  const UntangleMetric* untangle_metric =
+      spec.untangle ? dynamic_cast<const UntangleMetric*>(spec.terms[0].metric.get()) : nullptr;
+  if (spec.untangle && !untangle_metric)
+    return fail("an untangling stage needs an UntangleMetric as its first term");
+  if (spec.untangle) {
+    // An inverted point whose nodes are all fixed cannot be repaired by moving nodes.
+    std::vector<int> stuck;
+    for (std::size_t p = 0; p < P; ++p) {
+      const int c = point_cell[p];
+      if (!stuck.empty() && stuck.back() == c) continue;
+      bool all_fixed = true;
+      for (int i = 0; i < mesh->cell_size(c); ++i) all_fixed &= fixed[mesh->cell(c)[i]] != 0;
+      if (!all_fixed) continue;
+      double T[9];
+      compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), G[0].data() + p * stride, T);
+      if (!(det_d(T, d) > 0)) stuck.push_back(c);
+    }
+    if (!stuck.empty())
+      return fail("cannot untangle: inverted cells with every node fixed: " + list_cells(stuck));
   }
 
   // The Ceres problem: one residual block per sample point with a free node.
@@ -531,35 +563,61 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   so.callbacks.push_back(&callback);
 
   ceres::Solver::Summary summary;
-  const int rounds = spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1;
-  std::vector<const double*> xs(kMaxCellNodes);
-  for (int round = 0; round < rounds; ++round) {
-    if (round > 0) {
-      // Reweight: multiplier (v_k / mean v)^(p-1) from the current per-point values.
-      std::vector<double> v(costs.size());
-      double mean = 0;
-      for (std::size_t k = 0; k < costs.size(); ++k) {
-        const int c = point_cell[cost_point[k]];
-        for (int i = 0; i < mesh->cell_size(c); ++i) xs[i] = mesh->vertex(mesh->cell(c)[i]);
-        costs[k].set_weight_multiplier(1.0);
-        v[k] = std::max(0.0, costs[k].value(xs.data()));
-        mean += v[k] / costs.size();
-      }
-      if (!(mean > 0)) break;
-      for (std::size_t k = 0; k < costs.size(); ++k)
-        costs[k].set_weight_multiplier(std::pow(v[k] / mean + 1e-12, spec.power - 1));
-    }
+  auto solve = [&]() {
     ceres::Solve(so, &problem, &summary);
     if (std::getenv("TMOP_CERES_REPORT"))
       std::fprintf(stderr, "%s\n", summary.FullReport().c_str());
     ++result->solves;
     result->iterations += static_cast<int>(summary.iterations.size()) - 1;
-    if (summary.termination_type == ceres::FAILURE)
-      return fail("solver failed: " + summary.message);
+    return summary.termination_type != ceres::FAILURE;
+  };
+  if (spec.untangle) {
+    // eps schedule: after each solve, sigma = max(1 - E / E_prev, 0.1),
+    // mu = (1 - sigma) chi(min det, eps); eps = 2 sqrt(mu (mu - min det)) while min det < mu.
+    std::vector<std::unique_ptr<UntangleMetric>> metrics;  // alive while costs point to them
+    const double theta = untangle_metric->theta();
+    double eps = untangle_metric->eps();
+    double energy_prev = std::numeric_limits<double>::infinity();
+    so.max_num_iterations = spec.untangle_round_iterations;
+    for (int round = 0; round < spec.untangle_max_rounds; ++round) {
+      metrics.push_back(std::make_unique<UntangleMetric>(d, eps, theta));
+      for (SamplePointCost& cost : costs) cost.set_metric(0, metrics.back().get());
+      if (!solve()) return fail("solver failed: " + summary.message);
+      result->final_eps = eps;
+      const double det_min = min_target_det(*mesh, point_cell, G[0], stride, nullptr);
+      if (det_min > 0) break;
+      const double energy = summary.final_cost;
+      const double sigma = std::max(1 - energy / energy_prev, 0.1);
+      const double mu = (1 - sigma) * UntangleMetric::chi(det_min, eps);
+      eps = det_min < mu ? 2 * std::sqrt(mu * (mu - det_min)) : 1e-12;
+      energy_prev = energy;
+    }
+  } else {
+    const int rounds = spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1;
+    std::vector<const double*> xs(kMaxCellNodes);
+    for (int round = 0; round < rounds; ++round) {
+      if (round > 0) {
+        // Reweight: multiplier (v_k / mean v)^(p-1) from the current per-point values.
+        std::vector<double> v(costs.size());
+        double mean = 0;
+        for (std::size_t k = 0; k < costs.size(); ++k) {
+          const int c = point_cell[cost_point[k]];
+          for (int i = 0; i < mesh->cell_size(c); ++i) xs[i] = mesh->vertex(mesh->cell(c)[i]);
+          costs[k].set_weight_multiplier(1.0);
+          v[k] = std::max(0.0, costs[k].value(xs.data()));
+          mean += v[k] / costs.size();
+        }
+        if (!(mean > 0)) break;
+        for (std::size_t k = 0; k < costs.size(); ++k)
+          costs[k].set_weight_multiplier(std::pow(v[k] / mean + 1e-12, spec.power - 1));
+      }
+      if (!solve()) return fail("solver failed: " + summary.message);
+    }
   }
 
   // Ceres leaves the best parameters in place; the callback may have seen a later state.
   const IterationRecord after = measure(*mesh, spec.rule, table);
+  result->min_det_after = min_target_det(*mesh, point_cell, G[0], stride, &result->inverted_cells);
   result->inverted_after = after.inverted;
   result->min_quality_after = after.min_quality;
   result->final_objective = exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements);

@@ -44,6 +44,15 @@ struct StageSpec {
   // residual of the form r |r|^(p-1) slows Levenberg-Marquardt to a crawl).
   double power = 1.0;
   int power_rounds = 4;  // reweighting rounds after the first solve when power > 1
+
+  // Untangling schedule (DESIGN.md section 7). When true, terms[0].metric must be an
+  // UntangleMetric (metric/untangle.h); the stage solves repeatedly, lowering its eps between
+  // solves from the current minimum of det T (Garanzha et al. 2021), until no sample point is
+  // inverted or untangle_max_rounds solves were made. Each solve is capped at
+  // untangle_round_iterations Ceres iterations.
+  bool untangle = false;
+  int untangle_max_rounds = 60;
+  int untangle_round_iterations = 40;
 };
 
 struct StageResult {
@@ -57,7 +66,10 @@ struct StageResult {
   double min_quality_before = 0, min_quality_after = 0;
   int num_elements = 0, num_sample_points = 0, num_free_vertices = 0;
   std::string linear_solver;
-  int solves = 0;  // Ceres solves (1 + reweighting rounds)
+  int solves = 0;  // Ceres solves (1 + reweighting or untangling rounds)
+  double min_det_before = 0, min_det_after = 0;  // min det T over sample points (term 0)
+  double final_eps = 0;                          // untangling: eps of the last solve
+  std::vector<int> inverted_cells;               // cells still inverted after the stage
   std::vector<IterationRecord> history;
 };
 

@@ -1,0 +1,44 @@
+// tmop/recipes/untangle.h
+// Untangling: make every element valid (det A > 0 at every sample point) by node movement, then
+// (optionally) improve the shapes with a barrier stage from the valid mesh.
+//
+// Energy: the regularised-determinant energy of metric/untangle.h on T = A W^-1, with W the
+// ideal shape of equal size (default) or the Jacobians of a reference mesh of the same topology
+// ("untangle toward its shapes"); eps is lowered between Ceres solves from the current minimum
+// of det T until nothing is inverted (optimize/stage.h, StageSpec::untangle).
+//
+// Result: Ok when the mesh is untangled (and improved). Failure when an inverted element has
+// every node fixed (nothing can repair it: the message names the cells; the mesh is unchanged)
+// or when inverted elements remain after the rounds allowed (the message names them; the mesh
+// then holds the best state reached, so a caller may still write it on request).
+#ifndef TMOP_RECIPES_UNTANGLE_H_
+#define TMOP_RECIPES_UNTANGLE_H_
+
+#include <vector>
+
+#include "tmop/core/status.h"
+#include "tmop/mesh/mesh.h"
+#include "tmop/recipes/improve_shape.h"
+#include "tmop/recipes/recipe_result.h"
+
+namespace tmop {
+
+struct UntangleOptions {
+  TargetSpec target;  // ideal shape, equal size by default; kReference to untangle toward a mesh
+  SampleRule rule = SampleRule::kDefault;
+  double theta = 0.5;        // weight of the size term of the untangling energy, in [0, 1]
+  double initial_eps = 1.0;  // first regularisation (dimensionless, det T units)
+  int max_rounds = 60;       // Ceres solves with decreasing eps
+  int round_iterations = 40;
+  // After untangling, run the shape recipe (a barrier stage) from the valid mesh.
+  bool improve_shape_after = true;
+  ShapeOptions shape;       // options of that stage (its fixed flags are replaced by ours)
+  std::vector<char> fixed;  // per-vertex flags; empty = boundary fixed
+  SolverOptions solver;
+};
+
+Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result);
+
+}  // namespace tmop
+
+#endif  // TMOP_RECIPES_UNTANGLE_H_
