@@ -13,6 +13,7 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -77,6 +78,26 @@ void check_header(const std::string& path, const std::string& ext) {
   }
 }
 
+// OpenMesh prints progress ("[OBJWriter] : write file") to stdout and its own diagnostics to
+// stderr; tmop reports through Status, so both are silenced while OpenMesh runs (and restored).
+class QuietOpenMesh {
+ public:
+  QuietOpenMesh()
+      : log_(omlog().is_enabled()), out_(omout().is_enabled()), err_(omerr().is_enabled()) {
+    omlog().disable();
+    omout().disable();
+    omerr().disable();
+  }
+  ~QuietOpenMesh() {
+    if (log_) omlog().enable();
+    if (out_) omout().enable();
+    if (err_) omerr().enable();
+  }
+
+ private:
+  bool log_, out_, err_;
+};
+
 }  // namespace
 
 void read_openmesh(const std::string& path, Mesh* mesh) {
@@ -84,6 +105,7 @@ void read_openmesh(const std::string& path, Mesh* mesh) {
   check_header(path, ext);
   PolyMesh pm;
   OpenMesh::IO::Options opt;
+  QuietOpenMesh quiet;
   if (!OpenMesh::IO::read_mesh(pm, path, opt))
     throw Error(path + ":1: OpenMesh could not parse this ." + ext + " file");
   mesh->space_dim = 3;
@@ -113,6 +135,7 @@ void read_openmesh(const std::string& path, Mesh* mesh) {
 
 void write_openmesh(const std::string& path, const std::string& ext, const Mesh& mesh,
                     const WriteOptions& options) {
+  QuietOpenMesh quiet;  // also silences add_face's "complex edge" complaints
   PolyMesh pm;
   std::vector<PolyMesh::VertexHandle> vh(mesh.num_vertices());
   for (int v = 0; v < mesh.num_vertices(); ++v)
