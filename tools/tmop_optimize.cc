@@ -1,6 +1,6 @@
 // tmop_optimize: improve a mesh by moving its nodes (Target-Matrix Optimization Paradigm).
 //
-//   tmop_optimize --input=IN --output=OUT [--recipe=auto|shape] [--metric=NAME]
+//   tmop_optimize --input=IN --output=OUT [--recipe=auto|shape|untangle] [--metric=NAME]
 //                 [--target=NAME] [--reference=FILE] [--sample_points=RULE] [--power=P]
 //                 [--solver=lm|dogleg] [--linear_solver=auto|cholesky|cgnr]
 //                 [--max_iterations=N] [--threads=N] [--report=FILE.json] [--verbose]
@@ -9,6 +9,7 @@
 // Errors are one line on stderr. OUT is written atomically and only on success; IN is never
 // opened for writing.
 #include <gflags/gflags.h>
+#include <glog/logging.h>
 
 #include <chrono>
 #include <cstdio>
@@ -19,12 +20,16 @@
 #include "tmop/mesh/orientation.h"
 #include "tmop/mesh/validate.h"
 #include "tmop/recipes/improve_shape.h"
+#include "tmop/recipes/untangle.h"
 
 DEFINE_string(input, "", "Input mesh (.msh .vtk .vtu .mesh .obj .off .ply .stl).");
 DEFINE_string(output, "", "Output mesh; format by extension. Written only on success.");
 DEFINE_string(recipe, "auto",
-              "auto: improve shape (refuses an inverted input until untangling lands); "
-              "shape: shape improvement with a barrier metric.");
+              "auto: untangle if anything is inverted, then improve shape; "
+              "shape: shape improvement with a barrier metric (the input must be valid); "
+              "untangle: untangle only.");
+DEFINE_bool(write_on_failure, false,
+            "When untangling fails, still write the best mesh reached to --output.");
 DEFINE_string(metric, "", "Metric name (default: the recipe's); see --list_metrics.");
 DEFINE_bool(list_metrics, false, "Print the metric names for 2D and 3D meshes and exit.");
 DEFINE_string(target, "equal_size",
@@ -76,6 +81,9 @@ int main(int argc, char** argv) {
       "improve a mesh by node movement\n"
       "  tmop_optimize --input=IN --output=OUT [--recipe=auto|shape] [flags]");
   gflags::ParseCommandLineFlags(&argc, &argv, true);
+  // Ceres reports through glog; the tool reports itself (one line on failure).
+  FLAGS_minloglevel = FLAGS_verbose ? 1 : 3;
+  google::InitGoogleLogging(argv[0]);
   using namespace tmop;
 
   if (FLAGS_list_metrics) {
@@ -88,8 +96,8 @@ int main(int argc, char** argv) {
   }
   if (FLAGS_input.empty() || FLAGS_output.empty())
     return fail(2, "--input and --output are required (see --help)");
-  if (FLAGS_recipe != "auto" && FLAGS_recipe != "shape")
-    return fail(2, "unknown --recipe '" + FLAGS_recipe + "' (known: auto, shape)");
+  if (FLAGS_recipe != "auto" && FLAGS_recipe != "shape" && FLAGS_recipe != "untangle")
+    return fail(2, "unknown --recipe '" + FLAGS_recipe + "' (known: auto, shape, untangle)");
   if (FLAGS_boundary != "fixed")
     return fail(2, "--boundary=" + FLAGS_boundary + " is not available yet (only fixed)");
 
@@ -141,17 +149,30 @@ int main(int argc, char** argv) {
   const IterationRecord before = measure_mesh(mesh, opt.rule);
   const int elements = mesh.num_elements();
   print_measure("before:", before, elements);
-  if (before.inverted > 0)
-    return fail(1, FLAGS_input + ": " + std::to_string(before.inverted) +
-                       " inverted elements; untangling is not available yet, so recipe " +
-                       FLAGS_recipe + " cannot start from this mesh");
-  s = improve_shape(&mesh, opt, &result);
-  if (!s.ok()) return fail(1, FLAGS_input + ": " + s.message());
-  print_measure("after:", result.after, elements);
+  bool write_anyway = false;
+  if (FLAGS_recipe == "shape") {
+    if (before.inverted > 0)
+      return fail(1, FLAGS_input + ": " + std::to_string(before.inverted) +
+                         " inverted elements: recipe shape needs a valid mesh (use --recipe=auto "
+                         "or untangle)");
+    s = improve_shape(&mesh, opt, &result);
+  } else {
+    UntangleOptions u;
+    u.target = opt.target;  // untangle toward the reference when one is given
+    if (opt.target.type != TargetType::kReference) u.target.type = TargetType::kIdealEqualSize;
+    u.rule = opt.rule;
+    u.solver = opt.solver;
+    u.improve_shape_after = FLAGS_recipe == "auto";
+    u.shape = opt;
+    s = untangle(&mesh, u, &result);
+    write_anyway = !s.ok() && FLAGS_write_on_failure && !result.stages.empty();
+  }
   for (const StageResult& st : result.stages)
-    std::printf("stage %s: objective %.6g -> %.6g in %d iterations, %.2f s (%s)\n", st.name.c_str(),
-                st.initial_objective, st.final_objective, st.iterations, st.seconds,
-                st.termination.c_str());
+    std::printf("stage %s: objective %.6g -> %.6g in %d iterations (%d solves), %.2f s (%s)\n",
+                st.name.c_str(), st.initial_objective, st.final_objective, st.iterations,
+                st.solves, st.seconds, st.termination.c_str());
+  if (!s.ok() && !write_anyway) return fail(1, FLAGS_input + ": " + s.message());
+  print_measure("after:", result.after, elements);
 
   if (flipped) reorient(&mesh);
   WriteOptions wopt;
@@ -161,5 +182,6 @@ int main(int argc, char** argv) {
   std::printf("wrote %s\n", FLAGS_output.c_str());
   if (!FLAGS_report.empty() && !write_text_atomically(FLAGS_report, recipe_json(result)))
     return fail(2, FLAGS_report + ": cannot write the report");
+  if (write_anyway) return fail(1, FLAGS_input + ": " + s.message() + " (best mesh written)");
   return 0;
 }

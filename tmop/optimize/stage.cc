@@ -572,12 +572,12 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     return summary.termination_type != ceres::FAILURE;
   };
   if (spec.untangle) {
-    // eps schedule: after each solve, sigma = max(1 - E / E_prev, 0.1),
+    // eps schedule: after each solve, sigma = max(1 - E_final / E_initial, 0.1) (the relative
+    // decrease the solve achieved),
     // mu = (1 - sigma) chi(min det, eps); eps = 2 sqrt(mu (mu - min det)) while min det < mu.
     std::vector<std::unique_ptr<UntangleMetric>> metrics;  // alive while costs point to them
     const double theta = untangle_metric->theta();
     double eps = untangle_metric->eps();
-    double energy_prev = std::numeric_limits<double>::infinity();
     so.max_num_iterations = spec.untangle_round_iterations;
     for (int round = 0; round < spec.untangle_max_rounds; ++round) {
       metrics.push_back(std::make_unique<UntangleMetric>(d, eps, theta));
@@ -587,10 +587,10 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       const double det_min = min_target_det(*mesh, point_cell, G[0], stride, nullptr);
       if (det_min > 0) break;
       const double energy = summary.final_cost;
-      const double sigma = std::max(1 - energy / energy_prev, 0.1);
+      const double sigma = std::max(1 - energy / summary.initial_cost, 0.1);
       const double mu = (1 - sigma) * UntangleMetric::chi(det_min, eps);
       eps = det_min < mu ? 2 * std::sqrt(mu * (mu - det_min)) : 1e-12;
-      energy_prev = energy;
+      if (std::getenv("TMOP_DEBUG_EPS")) std::fprintf(stderr, "round %d E %g det_min %g mu %g eps %g\n", round, energy, det_min, mu, eps);
     }
   } else {
     const int rounds = spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1;
