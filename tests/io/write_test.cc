@@ -77,6 +77,20 @@ TEST(Write, MissingDirectoryAndBadOptionsFailWithAMessage) {
   EXPECT_TRUE(list_dir(dir).empty());
 }
 
+TEST(Write, InconsistentMeshIsRefused) {
+  const std::string dir = test::temp_dir();
+  Mesh m = test::make_mesh({CellType::kTet4, CellType::kTri3});
+  m.cell_region.pop_back();
+  for (const char* ext : {"msh", "vtk", "vtu", "mesh", "obj"})
+    EXPECT_FALSE(write_mesh(dir + "/x." + ext, m).ok()) << ext;
+  m = test::make_mesh({CellType::kTet4});
+  m.cell_nodes[2] = 1000;
+  const Status s = write_mesh(dir + "/x.vtu", m);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("refers to vertex 1000"), std::string::npos) << s.message();
+  EXPECT_TRUE(list_dir(dir).empty());
+}
+
 TEST(Write, ReadingNeverModifiesTheInput) {
   const std::string dir = test::temp_dir();
   const std::string path = dir + "/in.vtu";

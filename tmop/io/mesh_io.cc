@@ -121,6 +121,26 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
     if (mesh.space_dim != 2 && mesh.space_dim != 3)
       return Status::Failure(path + ": cannot write a mesh with space_dim " +
                              std::to_string(mesh.space_dim));
+    // Writers index these arrays per cell: refuse an inconsistent Mesh instead of reading past
+    // the end of one of them.
+    const std::size_t n = mesh.cell_types.size();
+    if (mesh.cell_region.size() != n || mesh.cell_entity.size() != n ||
+        mesh.cell_offsets.size() != n + 1 || mesh.coords.size() % mesh.space_dim != 0 ||
+        (n > 0 && static_cast<std::size_t>(mesh.cell_offsets[n]) != mesh.cell_nodes.size()))
+      return Status::Failure(path +
+                             ": cannot write an inconsistent Mesh (cell_region, cell_entity, "
+                             "cell_offsets, cell_nodes and coords sizes disagree)");
+    for (std::size_t c = 0; c < n; ++c)
+      if (mesh.cell_offsets[c + 1] - mesh.cell_offsets[c] != cell_num_nodes(mesh.cell_types[c]))
+        return Status::Failure(path + ": cannot write: cell " + std::to_string(c) + " has " +
+                               std::to_string(mesh.cell_offsets[c + 1] - mesh.cell_offsets[c]) +
+                               " nodes, its type " + cell_name(mesh.cell_types[c]) + " has " +
+                               std::to_string(cell_num_nodes(mesh.cell_types[c])));
+    for (std::int32_t v : mesh.cell_nodes)
+      if (v < 0 || v >= mesh.num_vertices())
+        return Status::Failure(path + ": cannot write: a cell refers to vertex " +
+                               std::to_string(v) + ", the mesh has " +
+                               std::to_string(mesh.num_vertices()));
     if (is_openmesh_ext(ext)) {
       int fd = -1;
       const std::string tmp = make_temp(path, ext, &fd);
