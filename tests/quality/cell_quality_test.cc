@@ -338,6 +338,16 @@ TEST(CellQuality, SurfaceTriangleIsMeasuredInItsPlane) {
   expect_rel(60, q.min_angle_deg, 1e-12);
 }
 
+TEST(CellQuality, BowTieSurfaceQuadIsInverted) {
+  // Corners in crossing order: the Newell normal vanishes, the cell is still measured in its plane.
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.4, Vec3(1, -1, 2).normalized()).toRotationMatrix();
+  std::vector<Vec3> x = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  for (Vec3& p : x) p = r * p;
+  const CellQuality q = cell_quality(CellType::kQuad4, flat(x).data(), nullptr);
+  EXPECT_TRUE(q.inverted);
+  EXPECT_LT(q.scaled_jacobian, 0);
+}
+
 TEST(CellQuality, LowerDimensionalCellsAreNotMeasured) {
   const double x[6] = {0, 0, 0, 1, 0, 0};
   const CellQuality q = cell_quality(CellType::kLine2, x, nullptr);

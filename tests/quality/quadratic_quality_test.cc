@@ -95,8 +95,12 @@ TEST(QuadraticQuality, CurvedTet10InversionAgreesWithDenseSampling) {
     const CellQuality q = cell_quality(CellType::kTet10, x.data(), nullptr);
     const double dense = dense_min_det(x);
     // A negative det anywhere must be reported; a certified cell must be valid everywhere.
-    if (dense < 0) EXPECT_TRUE(q.inverted);
-    if (q.certified == 1) EXPECT_GT(dense, 0);
+    if (dense < 0) {
+      EXPECT_TRUE(q.inverted);
+    }
+    if (q.certified == 1) {
+      EXPECT_GT(dense, 0);
+    }
     EXPECT_LE(q.mean_ratio, 1);
     inverted += q.inverted;
     valid += !q.inverted;

@@ -258,8 +258,14 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
     Vec3 n(0, 0, 1);
     if (up != nullptr) {
       n = Vec3(up);
-    } else if (own.squaredNorm() > 0) {
+    } else if (own.squaredNorm() > 1e-24 * sum_l2 * sum_l2) {
       n = own.normalized();
+    } else {
+      // A bow-tie quad has a zero Newell normal: orient it by its first corner instead, so that
+      // it is measured in its own plane and shows up as inverted.
+      const Vec3 corner = (node(nodes, 1) - node(nodes, 0))
+                              .cross(node(nodes, info.num_corners - 1) - node(nodes, 0));
+      if (corner.squaredNorm() > 0) n = corner.normalized();
     }
     project_to_plane(info.num_nodes, nodes, n, projected);
     p = projected;

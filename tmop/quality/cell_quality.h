@@ -16,7 +16,7 @@
 //                     tri6 / tet10: the minimum of the pointwise value over the sample points
 //   scaled_jacobian   min over corner frames (corner_frames.h) of det(E) / prod |e_k|, divided by
 //                     the same quantity of the ideal element so that the ideal scores 1; in
-//                     [-1, 1] for tri, quad, tet, hex, wedge (pyramid: slightly above 1 possible);
+//                     in [-1, 1] (pyramid, wedge: <= 1 in random sampling, not proven);
 //                     quadratic cells: of their corners (the straight-sided cell)
 //   condition_number  max over corners / sample points of |T|_F |T^-1|_F / d, in [1, inf);
 //                     +inf when det T <= 0 somewhere

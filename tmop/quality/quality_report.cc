@@ -58,8 +58,8 @@ QualityReport compute_quality(const Mesh& mesh, const QualityOptions& options) {
   init(&r.mean_ratio, "mean_ratio", "mean ratio", "1", tenths(), n);
   init(&r.scaled_jacobian, "scaled_jacobian", "scaled Jacobian", "1", tenths(), n);
   init(&r.condition_number, "condition_number", "condition number", "1", ratio_bins, n);
-  init(&r.min_angle, "min_angle_deg", "min angle (deg)", "60|90", angle_bins, n);
-  init(&r.max_angle, "max_angle_deg", "max angle (deg)", "60|90", angle_bins, n);
+  init(&r.min_angle, "min_angle_deg", "min angle (deg)", "60/90", angle_bins, n);
+  init(&r.max_angle, "max_angle_deg", "max angle (deg)", "60/90", angle_bins, n);
   init(&r.min_dihedral, "min_dihedral_deg", "min dihedral (deg)", "70.53", angle_bins, n);
   init(&r.max_dihedral, "max_dihedral_deg", "max dihedral (deg)", "70.53", angle_bins, n);
   init(&r.min_edge_length, "min_edge_length", "min edge length", "", {}, n);
