@@ -14,6 +14,7 @@ namespace tmop {
 
 class FixedMetric : public Metric {
  public:
+  // exact: whether |r|^2 == value() - min_value() identically (see Metric::exact_residuals()).
   FixedMetric(std::string name, std::string alias, int dim, MetricClass metric_class, bool barrier,
               int num_residuals, bool exact = true)
       : name_(std::move(name)),
