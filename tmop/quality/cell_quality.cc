@@ -10,6 +10,7 @@
 #include "tmop/element/shape.h"
 #include "tmop/quality/corner_frames.h"
 #include "tmop/quality/ideal_element.h"
+#include "tmop/quality/jacobian_certificate.h"
 
 namespace tmop {
 namespace {
@@ -300,17 +301,19 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
   if (type == CellType::kTri3 || type == CellType::kTet4 || type == CellType::kQuad4) {
     // det J is constant (simplices) or affine in xi (the bilinear quad): the corners decide.
     q.certified = q.inverted ? 0 : 1;
-  } else if (options.bezier_certificate && jacobian_bezier_count(type) > 0 &&
-             (options.certify_all_types || type == CellType::kTri6 || type == CellType::kTet10)) {
+  } else if (options.bezier_certificate && (type == CellType::kTri6 || type == CellType::kTet10)) {
+    // The quadratic simplices count an unproven cell as inverted: their det J can dip below 0
+    // between sample points, which is what the optimizer must never leave behind.
+    const JacobianSign sign = certify_jacobian(type, p, options.bezier_subdivision);
+    q.certified = sign == JacobianSign::kPositive ? 1 : 0;
+    q.inverted = q.inverted || sign != JacobianSign::kPositive;
+  } else if (options.bezier_certificate && options.certify_all_types &&
+             jacobian_bezier_count(type) > 0) {
+    // quad9 / hex8 / wedge6: the plain bound is reported but is too pessimistic to call cells
+    // inverted.
     double coefficients[kMaxBezierCoefficients];
     const int n = jacobian_bezier_coefficients(type, p, coefficients);
-    const bool positive =
-        std::all_of(coefficients, coefficients + n, [](double c) { return c > 0; });
-    q.certified = positive ? 1 : 0;
-    // Only the quadratic simplices count an unproven cell as inverted: their det J can dip
-    // below 0 between sample points, which is what the optimizer must never leave behind. For
-    // hex8 / wedge6 / quad9 the bound is reported but is too pessimistic to call cells inverted.
-    if (type == CellType::kTri6 || type == CellType::kTet10) q.inverted = q.inverted || !positive;
+    q.certified = std::all_of(coefficients, coefficients + n, [](double c) { return c > 0; });
   }
   return q;
 }

@@ -2,13 +2,14 @@
 // The quality measures of one cell (docs/quality.md defines each one; "1 = ideal" always means
 // the ideal element of ideal_element.h). Measures that do not apply to the cell's type are NaN.
 //
-//   inverted          det(A) <= 0 at a corner or sample point; tri6/tet10 also when the Bernstein
-//                     bound cannot prove det(A) > 0 everywhere (QualityOptions::bezier_certificate)
+//   inverted          det(A) <= 0 at a corner or sample point; tri6/tet10 also when det(A) > 0
+//   cannot
+//                     be proven on the whole cell (QualityOptions::bezier_certificate)
 //   certified         1 when det(A) > 0 is proven on the whole cell, else 0: tri3, tet4, quad4 by
-//                     their corners (det A is constant or affine there); tri6, tet10 by the
-//                     Bernstein coefficients of det A (element/bezier.h) all > 0, and so quad9,
-//                     hex8, wedge6 with QualityOptions::certify_all_types; NaN otherwise (pyramid5
-//                     and hex27 have no certificate here)
+//                     their corners (det A is constant or affine there); tri6, tet10 by Bernstein
+//                     coefficients with subdivision (jacobian_certificate.h); quad9, hex8, wedge6
+//                     by the plain Bernstein bound with QualityOptions::certify_all_types; NaN
+//                     otherwise (pyramid5 and hex27 have no certificate here)
 //   min_det           min det(T), T = A W^-1, W the Jacobian of the ideal element with unit edges:
 //                     the local volume (area) relative to that element, length^d, signed
 //   mean_ratio        simplices: d det(T)^(2/d) / |T|_F^2 with sign(det T), in [-1, 1]; tri3 / tet4

@@ -15,11 +15,16 @@ struct QualityOptions {
   // Jacobian is constant (simplices) or extreme at the corners (quad4).
   SampleRule sample_rule = SampleRule::kDefault;
 
-  // tri6 / tet10: also bound det J over the whole cell by its Bernstein coefficients
-  // (element/bezier.h). A cell whose coefficients are not all > 0 is reported inverted even when no
-  // sample point shows det J <= 0: it cannot be proven valid. Default on; turn off to report
+  // tri6 / tet10: also decide the sign of det J over the whole cell by its Bernstein coefficients
+  // (element/bezier.h), subdividing up to bezier_subdivision levels where the plain bound is
+  // inconclusive (jacobian_certificate.h). A cell that cannot be proven valid is reported
+  // inverted even when no sample point shows det J <= 0. Default on; turn off to report
   // sample-point inversion only.
   bool bezier_certificate = true;
+
+  // Subdivision levels of the certificate (0 = the plain bound of the whole cell). Only cells
+  // whose bound is inconclusive pay for it: at most 4^k (tri6) / 8^k (tet10) sub-cells. Default 3.
+  int bezier_subdivision = 3;
 
   // Also certify the types whose certificate does not decide `inverted` (quad9, hex8, wedge6),
   // filling cell_quality.h's `certified` for them (else NaN). Off by default: 27 coefficients per
