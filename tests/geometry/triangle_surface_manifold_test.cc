@@ -44,6 +44,74 @@ void add_sphere(double r, int rings, std::vector<double>* vertices,
   }
 }
 
+// A grid of n x n squares of size h, each split into two triangles, in the plane z = 0, then
+// folded along x = fold by the angle `bend` (radians): points with x > fold rise.
+void add_folded_grid(int n, double h, double fold, double bend, std::vector<double>* vertices,
+                     std::vector<std::int32_t>* triangles) {
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const double x = i * h, y = j * h;
+      const double beyond = std::max(0.0, x - fold);
+      vertices->insert(vertices->end(),
+                       {std::min(x, fold) + beyond * std::cos(bend), y, beyond * std::sin(bend)});
+    }
+  }
+  auto id = [&](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      triangles->insert(triangles->end(), {id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      triangles->insert(triangles->end(), {id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+}
+
+TEST(TriangleSurfaceManifold, WalkOnAPlaneIsTheStraightStep) {
+  std::vector<double> v;
+  std::vector<std::int32_t> t;
+  add_folded_grid(20, 0.2, 100, 0, &v, &t);  // flat 4 x 4 square
+  TriangleSurfaceManifold surface(v, t);
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int trial = 0; trial < 200; ++trial) {
+    // Start at mesh vertices half of the time: every patch vertex starts at one.
+    double x[3] = {1 + 2 * u(rng), 1 + 2 * u(rng), 0};
+    if (trial % 2 == 0) {
+      x[0] = std::round(x[0] / 0.2) * 0.2;
+      x[1] = std::round(x[1] / 0.2) * 0.2;
+    }
+    const double d[2] = {1.8 * u(rng) - 0.9, 1.8 * u(rng) - 0.9};
+    double jac[6], y[3], back[2];
+    ASSERT_TRUE(surface.PlusJacobian(x, jac));
+    ASSERT_TRUE(surface.Plus(x, d, y));
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(y[i], x[i] + jac[2 * i] * d[0] + jac[2 * i + 1] * d[1], 1e-13) << trial;
+    }
+    ASSERT_TRUE(surface.Minus(y, x, back));
+    EXPECT_NEAR(back[0], d[0], 1e-12);
+    EXPECT_NEAR(back[1], d[1], 1e-12);
+  }
+}
+
+TEST(TriangleSurfaceManifold, WalkAcrossAFoldKeepsLengthAndAngle) {
+  // Folded by 60 degrees along x = 1: unfolding the walk must give the straight step.
+  std::vector<double> v;
+  std::vector<std::int32_t> t;
+  add_folded_grid(20, 0.1, 1.0, M_PI / 3, &v, &t);
+  TriangleSurfaceManifold surface(v, t);
+  const double x[3] = {0.55, 1.05, 0};
+  double jac[6];
+  surface.PlusJacobian(x, jac);
+  // Tangent coordinates of the step (0.8, 0.3) in the flat part's plane.
+  const double step[3] = {0.8, 0.3, 0};
+  const double d[2] = {jac[0] * step[0] + jac[2] * step[1], jac[1] * step[0] + jac[3] * step[1]};
+  double y[3];
+  ASSERT_TRUE(surface.Plus(x, d, y));
+  // Unfolded end point (1.35, 1.35): 0.35 beyond the fold along the bent plane.
+  EXPECT_NEAR(y[0], 1 + 0.35 * std::cos(M_PI / 3), 1e-12);
+  EXPECT_NEAR(y[1], 1.35, 1e-12);
+  EXPECT_NEAR(y[2], 0.35 * std::sin(M_PI / 3), 1e-12);
+}
+
 TEST(TriangleSurfaceManifold, InvariantsInsideFaces) {
   std::vector<double> v;
   std::vector<std::int32_t> t;

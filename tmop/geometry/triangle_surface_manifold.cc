@@ -132,7 +132,66 @@ bool TriangleSurfaceManifold::Normal(const double* x, double* n) const {
   return true;
 }
 
+int TriangleSurfaceManifold::leave_vertex(int tri, int corner_index, double* w) const {
+  const std::int32_t vertex = triangles_[3 * tri + corner_index];
+  // The fan of triangles around the vertex, collected by turning both ways through neighbours
+  // (an open fan stops at border edges). Fixed capacity: valences beyond it are truncated.
+  constexpr int kMaxFan = 64;
+  int fan[kMaxFan];
+  int size = 0;
+  fan[size++] = tri;
+  // Edge opposite corner j is (j + 1, j + 2): the two edges at the vertex (corner kv) are those
+  // opposite kv + 1 and kv + 2; turn through the first until back at tri or at a border, then,
+  // for an open fan, the other way.
+  bool closed = false;
+  for (int turn = 1; turn <= 2 && !closed; ++turn) {
+    int cur = tri;
+    while (size < kMaxFan) {
+      int kv = 0;
+      while (triangles_[3 * cur + kv] != vertex) ++kv;
+      const int next = neighbours_[3 * cur + (kv + turn) % 3];
+      if (next < 0) break;
+      if (next == tri) {
+        closed = true;
+        break;
+      }
+      fan[size++] = next;
+      cur = next;
+    }
+  }
+  // The triangle whose corner wedge at the vertex contains w (projected onto its plane), or
+  // the one that comes closest: the sign of both other barycentric rates says "inside".
+  int best = tri;
+  double best_score = -kInf;
+  double best_w[3] = {w[0], w[1], w[2]};
+  for (int i = 0; i < size; ++i) {
+    const int f = fan[i];
+    const double* n = frame(f);
+    double wf[3];
+    const double wn = vec3::dot(w, n);
+    for (int k = 0; k < 3; ++k) wf[k] = w[k] - wn * n[k];
+    if (vec3::normalize(wf) == 0) continue;
+    double lam[3], dlam[3];
+    const double* c[3] = {corner(f, 0), corner(f, 1), corner(f, 2)};
+    barycentric(c[0], c[1], c[2], vertices_.data() + 3 * vertex, wf, lam, dlam);
+    int kv = 0;
+    while (triangles_[3 * f + kv] != vertex) ++kv;
+    double e[3];
+    vec3::sub(c[(kv + 1) % 3], c[(kv + 2) % 3], e);
+    // Barycentric rates are per unit length / edge length: scale by the opposite edge.
+    const double score = std::min(dlam[(kv + 1) % 3], dlam[(kv + 2) % 3]) * vec3::norm(e);
+    if (score > best_score) {
+      best_score = score;
+      best = f;
+      for (int k = 0; k < 3; ++k) best_w[k] = wf[k];
+    }
+  }
+  for (int k = 0; k < 3; ++k) w[k] = best_w[k];
+  return best;
+}
+
 void TriangleSurfaceManifold::walk(int* tri, double* p, double* w, double len) const {
+  bool turned_at_vertex = false;
   for (int crossing = 0; crossing < kMaxCrossings && len > 0; ++crossing) {
     const double* c[3] = {corner(*tri, 0), corner(*tri, 1), corner(*tri, 2)};
     double lam[3], dlam[3];
@@ -153,6 +212,22 @@ void TriangleSurfaceManifold::walk(int* tri, double* p, double* w, double len) c
       for (int i = 0; i < 3; ++i) p[i] += len * w[i];
       return;
     }
+    // At a mesh vertex (where every patch vertex starts) a zero-length exit would send the
+    // path round the fan through edge after edge; instead pick, once, the fan triangle whose
+    // corner the direction points into, and walk from the vertex inside it.
+    const double kAtCorner = 1e-12;
+    int at_vertex = -1;
+    for (int k = 0; k < 3; ++k) {
+      if (lam[k] >= 1 - kAtCorner) at_vertex = k;
+    }
+    if (at_vertex >= 0 && !turned_at_vertex && std::max(lam[exit_k], 0.0) <= kAtCorner) {
+      turned_at_vertex = true;
+      const std::int32_t v = triangles_[3 * *tri + at_vertex];
+      *tri = leave_vertex(*tri, at_vertex, w);
+      for (int i = 0; i < 3; ++i) p[i] = vertices_[3 * v + i];
+      continue;
+    }
+    if (exit_t > 0) turned_at_vertex = false;
     // The exit point, built on the edge itself so that round-off cannot accumulate off it.
     const int k1 = (exit_k + 1) % 3, k2 = (exit_k + 2) % 3;
     double l1 = std::max(lam[k1] + exit_t * dlam[k1], 0.0);
@@ -175,10 +250,10 @@ void TriangleSurfaceManifold::walk(int* tri, double* p, double* w, double len) c
       if (neighbours_[3 * next + k] == *tri) opposite = k;
     }
     edge_normal(frame(next), e, corner(next, opposite), c[k1], m_to);
-    // m_to points from the neighbour's far corner towards the edge; walking into the
-    // neighbour goes the other way.
+    // m_from points out of the triangle left behind, m_to into the neighbour (away from the
+    // edge, towards its far corner).
     const double we = vec3::dot(w, e), wm = vec3::dot(w, m_from);
-    for (int i = 0; i < 3; ++i) w[i] = we * e[i] - wm * m_to[i];
+    for (int i = 0; i < 3; ++i) w[i] = we * e[i] + wm * m_to[i];
     vec3::normalize(w);
     *tri = next;
   }

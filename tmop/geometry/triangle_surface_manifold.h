@@ -60,6 +60,9 @@ class TriangleSurfaceManifold : public GeometryManifold {
   // Walks from p (on triangle *tri) for the length len along the unit direction w (in the
   // triangle's plane); updates p, w and *tri.
   void walk(int* tri, double* p, double* w, double len) const;
+  // Leaving the mesh vertex at corner `corner_index` of tri in direction w: the triangle of the
+  // vertex's fan that w points into; w is projected onto its plane.
+  int leave_vertex(int tri, int corner_index, double* w) const;
 
   std::vector<double> vertices_;
   std::vector<std::int32_t> triangles_;
