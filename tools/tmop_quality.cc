@@ -37,6 +37,9 @@ DEFINE_string(sample_rule, "default",
 DEFINE_bool(bezier, true,
             "Certify tri6/tet10 cells with the Bernstein bound of det J; an unproven cell counts "
             "as inverted. --nobezier reports sample-point inversion only.");
+DEFINE_int32(bezier_subdivision, 3,
+             "Subdivision levels of the tri6/tet10 certificate where the plain Bernstein bound is "
+             "inconclusive (0 = plain bound only; at most 8).");
 DEFINE_bool(certify_all_types, false,
             "Also compute the Bernstein certificate of quad9/hex8/wedge6 cells (the 'certified' "
             "field; it does not change 'inverted'). About 5x slower on hex meshes.");
@@ -117,6 +120,7 @@ int main(int argc, char** argv) {
   if (!tmop::sample_rule_from_name(FLAGS_sample_rule, &options.sample_rule))
     return fail(kUsageError, "unknown --sample_rule '" + FLAGS_sample_rule + "'");
   options.bezier_certificate = FLAGS_bezier;
+  options.bezier_subdivision = FLAGS_bezier_subdivision;
   options.certify_all_types = FLAGS_certify_all_types;
   options.threads = FLAGS_threads;
 

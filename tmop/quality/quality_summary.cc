@@ -48,6 +48,7 @@ std::string quality_summary(const QualityReport& r) {
            r.edge_length.count, g6(r.edge_length.min).c_str(), g6(r.edge_length.mean).c_str(),
            g6(r.edge_length.max).c_str());
   }
+  if (r.num_elements == 0) return out + "no 2D or 3D elements to measure\n";
   out += "\n";
   append(&out, "%-20s %12s %12s %12s %8s %10s\n", "measure", "min", "mean", "max", "ideal",
          "infinite");
