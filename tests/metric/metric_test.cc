@@ -231,7 +231,7 @@ TEST_P(MetricTest, BarrierValueGrowsWithoutBoundAsDeterminantVanishes) {
   const Metric& m = *metric_;
   if (!m.barrier()) GTEST_SKIP() << "not a barrier";
   const Mat Q1 = random_rotation(d_, rng_), Q2 = random_rotation(d_, rng_);
-  double previous = 0.0;
+  double previous = 0.0, previous_rr = 0.0;
   for (double delta : {1e-1, 1e-2, 1e-4, 1e-6, 1e-8}) {
     Mat D = Mat::Identity(d_, d_);
     D(d_ - 1, d_ - 1) = delta;
@@ -239,11 +239,15 @@ TEST_P(MetricTest, BarrierValueGrowsWithoutBoundAsDeterminantVanishes) {
     const double v = m.value(T.data());
     EXPECT_GT(v, previous) << m.name() << " delta=" << delta;
     previous = v;
+    // The least-squares form is a barrier too (Ceres minimises |r|^2, not value()).
     Eigen::VectorXd r;
     ASSERT_TRUE(eval(m, T, &r, nullptr));
     EXPECT_TRUE(r.allFinite());
+    EXPECT_GT(r.squaredNorm(), previous_rr) << m.name() << " delta=" << delta;
+    previous_rr = r.squaredNorm();
   }
   EXPECT_GT(previous, 1e4) << m.name();
+  EXPECT_GT(previous_rr, 1e4) << m.name();
 }
 
 TEST_P(MetricTest, NonFiniteInputIsRefused) {
