@@ -304,7 +304,9 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
   } else if (options.bezier_certificate && (type == CellType::kTri6 || type == CellType::kTet10)) {
     // The quadratic simplices count an unproven cell as inverted: their det J can dip below 0
     // between sample points, which is what the optimizer must never leave behind.
-    const JacobianSign sign = certify_jacobian(type, p, options.bezier_subdivision);
+    // (A sample point already showing det <= 0 settles it without the certificate.)
+    const JacobianSign sign = q.inverted ? JacobianSign::kNonPositive
+                                         : certify_jacobian(type, p, options.bezier_subdivision);
     q.certified = sign == JacobianSign::kPositive ? 1 : 0;
     q.inverted = q.inverted || sign != JacobianSign::kPositive;
   } else if (options.bezier_certificate && options.certify_all_types &&
