@@ -8,7 +8,9 @@
 //   wedge6   right prism with an equilateral base, unit height
 //   pyramid5 pyramid with a unit square base and equilateral sides (apex height 1/sqrt2)
 // The corners are in Gmsh order and orientation (positive Jacobian). Quadratic types use the ideal
-// element of their linear type (straight edges, mid-edge nodes at midpoints).
+// element of their linear type (straight edges, mid-edge nodes at midpoints). The same elements
+// as target/ideal_element.h (which gives W only); quality/ cannot depend on target/, and the
+// corner frames need the corner coordinates.
 #ifndef TMOP_QUALITY_IDEAL_ELEMENT_H_
 #define TMOP_QUALITY_IDEAL_ELEMENT_H_
 
