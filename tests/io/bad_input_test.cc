@@ -4,13 +4,20 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <regex>
 
 #include "io_test_util.h"
 #include "tmop/io/mesh_io.h"
 
 namespace tmop {
 namespace {
+
+// "LINE: what" or "byte N: what" (std::regex trips GCC 12 warnings under sanitizers).
+bool located(const std::string& rest) {
+  std::size_t i = rest.rfind("byte ", 0) == 0 ? 5 : 0;
+  const std::size_t digits = i;
+  while (i < rest.size() && rest[i] >= '0' && rest[i] <= '9') ++i;
+  return i > digits && rest.compare(i, 2, ": ") == 0 && i + 2 < rest.size() && rest[i + 2] != ' ';
+}
 
 std::vector<std::string> corpus() {
   const std::string dir = std::string(TMOP_SOURCE_DIR) + "/tests/data/bad";
@@ -30,7 +37,6 @@ std::vector<std::string> corpus() {
 TEST(BadInput, EveryCorpusFileFailsWithALocatedOneLineMessage) {
   const std::vector<std::string> files = corpus();
   ASSERT_GE(files.size(), 60u);
-  const std::regex located("(\\d+|byte \\d+): \\S.*");
   for (const std::string& path : files) {
     Mesh mesh;
     mesh.space_dim = 3;
@@ -43,7 +49,7 @@ TEST(BadInput, EveryCorpusFileFailsWithALocatedOneLineMessage) {
     if (path.find("unknown_extension") != std::string::npos) {
       EXPECT_NE(rest.find("unknown mesh file extension"), std::string::npos) << m;
     } else {
-      EXPECT_TRUE(std::regex_match(rest, located)) << m;
+      EXPECT_TRUE(located(rest)) << m;
     }
     // A failed read leaves an empty mesh.
     EXPECT_EQ(mesh.num_vertices(), 0) << path;
