@@ -30,8 +30,11 @@ TEST(MetricThroughput, DISABLED_ResidualsAndJacobianPerSecond) {
       metrics.emplace_back(name, make_metric(name, d));
     }
     if (d == 3) {
-      metrics.emplace_back("shape_barrier_3d (rotation-fixed J)",
-                           make_shape_3d_metric(Shape3dForm::kBarrier, true));
+      metrics.emplace_back("shape_barrier_3d (cofactor form)",
+                           make_shape_3d_metric(Shape3dForm::kBarrier, Shape3dResidual::kCofactor));
+      metrics.emplace_back(
+          "shape_barrier_3d (rotation-fixed J)",
+          make_shape_3d_metric(Shape3dForm::kBarrier, Shape3dResidual::kPolarRotationFixed));
     }
     for (const auto& [name, m] : metrics) {
       double r[kMaxMetricResiduals], J[kMaxMetricResiduals * 9];

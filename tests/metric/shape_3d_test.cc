@@ -1,7 +1,8 @@
 // tests/metric/shape_3d_test.cc
 // The 3D polar shape residuals r = c vec(S - R): the polar rotation and its derivative, the
 // rotation-fixed Jacobian, J^t r against the gradient with R held fixed, and the Gauss-Newton
-// model along element rotations. Also the small-matrix kernels they rely on.
+// model along element rotations; the cofactor residual form of the same metrics. Also the
+// small-matrix kernels they rely on.
 #include "tmop/metric/shape_3d.h"
 
 #include <gtest/gtest.h>
@@ -109,7 +110,7 @@ TEST(SmallMatrix, PolarRotationDerivativeMatchesCentralDifferences) {
 TEST(PolarShape, RotationFixedJacobianMatchesDifferencesWithRFixed) {
   std::mt19937 rng(13);
   for (const PolarForm& f : kPolarForms) {
-    std::unique_ptr<Metric> m = make_shape_3d_metric(f.form, /*rotation_fixed_jacobian=*/true);
+    std::unique_ptr<Metric> m = make_shape_3d_metric(f.form, Shape3dResidual::kPolarRotationFixed);
     const double c = std::sqrt(f.c2);
     for (int trial = 0; trial < 20; ++trial) {
       const Mat T = random_matrix(3, rng);
@@ -131,8 +132,9 @@ TEST(PolarShape, RotationFixedJacobianMatchesDifferencesWithRFixed) {
 TEST(PolarShape, JtRIsTheGradientWithRotationHeldFixed) {
   std::mt19937 rng(14);
   for (const PolarForm& f : kPolarForms) {
-    for (bool rotation_fixed : {false, true}) {
-      std::unique_ptr<Metric> m = make_shape_3d_metric(f.form, rotation_fixed);
+    for (Shape3dResidual residual :
+         {Shape3dResidual::kPolar, Shape3dResidual::kPolarRotationFixed}) {
+      std::unique_ptr<Metric> m = make_shape_3d_metric(f.form, residual);
       const double c = std::sqrt(f.c2);
       for (int trial = 0; trial < 20; ++trial) {
         const Mat T = random_matrix(3, rng, false, 0.2, 5.0);
@@ -155,8 +157,9 @@ TEST(PolarShape, JtRIsTheGradientWithRotationHeldFixed) {
 TEST(PolarShape, ExactJacobianHasNoStiffnessAlongRotationsAtTheMinimum) {
   std::mt19937 rng(15);
   for (const PolarForm& f : kPolarForms) {
-    std::unique_ptr<Metric> exact = make_shape_3d_metric(f.form, false);
-    std::unique_ptr<Metric> fixed = make_shape_3d_metric(f.form, true);
+    std::unique_ptr<Metric> exact = make_shape_3d_metric(f.form, Shape3dResidual::kPolar);
+    std::unique_ptr<Metric> fixed =
+        make_shape_3d_metric(f.form, Shape3dResidual::kPolarRotationFixed);
     const Mat T = 1.7 * random_rotation(3, rng);  // a minimiser
     Mat W = Mat::Random(3, 3);
     W = W - Mat(W.transpose());  // skew: dT = W T rotates the element
@@ -187,6 +190,81 @@ TEST(PolarShape, MinimisersAgreeWithThePublishedMetric) {
       EXPECT_GT(r.norm(), 1e-6);
       EXPECT_GT(m->value(off.data()), 1e-10);
     }
+  }
+}
+
+TEST(CofactorShape, JacobianMatchesCentralDifferences) {
+  std::mt19937 rng(17);
+  for (const PolarForm& f : kPolarForms) {
+    std::unique_ptr<Metric> m = make_shape_3d_metric(f.form, Shape3dResidual::kCofactor);
+    for (int trial = 0; trial < 30; ++trial) {
+      const Mat T = random_matrix(3, rng, false, trial < 20 ? 0.3 : 0.1, trial < 20 ? 3.0 : 10.0);
+      Eigen::VectorXd r;
+      Mat J;
+      ASSERT_TRUE(eval(*m, T, &r, &J));
+      const Mat Jn = central_jacobian(
+          [&](const Mat& X) {
+            Eigen::VectorXd rx;
+            EXPECT_TRUE(eval(*m, X, &rx, nullptr));
+            return rx;
+          },
+          T, 9);
+      EXPECT_LT(scaled_error(J, Jn), 1e-6) << m->name();
+    }
+  }
+}
+
+TEST(CofactorShape, SameMinimisersInvariancesAndSecondOrderAgreement) {
+  std::mt19937 rng(18);
+  for (const PolarForm& f : kPolarForms) {
+    std::unique_ptr<Metric> m = make_shape_3d_metric(f.form, Shape3dResidual::kCofactor);
+    std::unique_ptr<Metric> polar = make_shape_3d_metric(f.form, Shape3dResidual::kPolar);
+    EXPECT_EQ(m->name(), polar->name());
+    EXPECT_FALSE(m->exact_residuals());
+    for (int trial = 0; trial < 20; ++trial) {
+      const Mat Q1 = random_rotation(3, rng), Q2 = random_rotation(3, rng);
+      const double s = std::exp(trial / 5.0 - 2.0);
+      Eigen::VectorXd r;
+      ASSERT_TRUE(eval(*m, Mat(s * Q1), &r, nullptr));
+      EXPECT_LT(r.norm(), 1e-12);
+      const Mat T = random_matrix(3, rng);
+      ASSERT_TRUE(eval(*m, T, &r, nullptr));
+      const double rr = r.squaredNorm();
+      EXPECT_GT(rr, 1e-8);
+      for (const Mat& X : {Mat(Q1 * T), Mat(T * Q2), Mat(s * T)}) {
+        Eigen::VectorXd rx;
+        ASSERT_TRUE(eval(*m, X, &rx, nullptr));
+        EXPECT_NEAR(rx.squaredNorm(), rr, 1e-10 * rr);
+      }
+      // Second order at the minimiser: (mu - 0) / |r|^2 -> 1.
+      const Mat E = Mat::Random(3, 3);
+      for (double eps : {1e-3, 1e-4}) {
+        const Mat X = s * Q1 * (Mat::Identity(3, 3) + eps * E) * Q2;
+        ASSERT_TRUE(eval(*m, X, &r, nullptr));
+        EXPECT_NEAR(m->value(X.data()) / r.squaredNorm(), 1.0, 20 * eps) << m->name();
+      }
+    }
+  }
+}
+
+TEST(CofactorShape, IsABarrier) {
+  std::mt19937 rng(19);
+  for (const PolarForm& f : kPolarForms) {
+    std::unique_ptr<Metric> m = make_shape_3d_metric(f.form, Shape3dResidual::kCofactor);
+    Mat T = random_matrix(3, rng, true);
+    double r[9], J[81];
+    EXPECT_FALSE(m->residuals(T.data(), r, J));
+    double previous = 0.0;
+    for (double delta : {1e-1, 1e-3, 1e-5, 1e-7}) {
+      Mat D = Mat::Identity(3, 3);
+      D(2, 2) = delta;
+      T = random_rotation(3, rng) * D;
+      ASSERT_TRUE(m->residuals(T.data(), r, J));
+      const double rr = Eigen::Map<const Vec9>(r).squaredNorm();
+      EXPECT_GT(rr, previous);
+      previous = rr;
+    }
+    EXPECT_GT(previous, 1e5);
   }
 }
 

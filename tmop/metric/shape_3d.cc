@@ -18,14 +18,48 @@ double nan_or_inf(double tau) {
   return std::isnan(tau) ? tau : std::numeric_limits<double>::infinity();
 }
 
-class PolarShapeMetric final : public FixedMetric {
+// F(X) = vec(cof X - n X) / (2 sqrt(n)), n = |X| / sqrt(3): the cofactor form of mu_360
+// (shape_3d.h), and dF/dX when J is not null.
+bool conformal_residual(const double* X, double* F, double* J) {
+  const double f2 = small_matrix::frobenius2<3>(X);
+  if (!std::isfinite(f2)) return false;
+  const double n = std::sqrt(f2 / 3.0);
+  if (!(n > 1e-150)) {  // X = 0 (a minimiser): F -> 0 and dF/dX -> 0 like |X|^(3/2), |X|^(1/2)
+    for (int m = 0; m < 9; ++m) F[m] = 0.0;
+    if (J != nullptr) {
+      for (int m = 0; m < 81; ++m) J[m] = 0.0;
+    }
+    return true;
+  }
+  double C[9];
+  small_matrix::cofactor<3>(X, C);
+  const double sn = std::sqrt(n);
+  const double u = 0.5 / sn;  // F = u cof - v X
+  const double v = 0.5 * sn;
+  for (int m = 0; m < 9; ++m) F[m] = u * C[m] - v * X[m];
+  if (J != nullptr) {
+    // dF = u dcof - v I - cof (x) X / (12 n^(5/2)) - X (x) X / (12 n^(3/2)).
+    small_matrix::cofactor_derivative_3(X, J);
+    const double p = 1.0 / (12.0 * n * n * sn);
+    const double q = n * p;
+    for (int i = 0; i < 9; ++i) {
+      double* row = J + 9 * i;
+      const double ai = -(p * C[i] + q * X[i]);
+      for (int m = 0; m < 9; ++m) row[m] = u * row[m] + ai * X[m];
+      row[i] -= v;
+    }
+  }
+  return true;
+}
+
+class BarrierShapeMetric final : public FixedMetric {
  public:
-  PolarShapeMetric(Shape3dForm form, const char* name, const char* alias, double c2,
-                   bool rotation_fixed)
+  BarrierShapeMetric(Shape3dForm form, const char* name, const char* alias, double c2,
+                     Shape3dResidual residual)
       : FixedMetric(name, alias, 3, MetricClass::kShape, true, 9, false),
         form_(form),
         c_(std::sqrt(c2)),
-        rotation_fixed_(rotation_fixed) {}
+        residual_(residual) {}
 
   double value(const double* T) const override {
     double C[9];
@@ -57,6 +91,7 @@ class PolarShapeMetric final : public FixedMetric {
     const double a = 1.0 / std::cbrt(tau);
     double S[9], R[9];
     for (int n = 0; n < 9; ++n) S[n] = a * T[n];
+    if (residual_ == Shape3dResidual::kCofactor) return cofactor_residuals(a, tau, S, C, r, dr_dT);
     if (!small_matrix::polar_rotation_unit_det_3(S, R)) return false;
     const double ca = c_ * a;
     for (int n = 0; n < 9; ++n) {
@@ -67,7 +102,7 @@ class PolarShapeMetric final : public FixedMetric {
       // dS/dT = a (I - vec(T) vec(T^-t)^t / 3), T^-t = C / tau. With R held fixed dr/dT = c dS/dT;
       // the exact Jacobian is c (I - L) dS/dT with L = dR/dS.
       const double b = 1.0 / (3.0 * tau);
-      if (rotation_fixed_) {
+      if (residual_ == Shape3dResidual::kPolarRotationFixed) {
         for (int n = 0; n < 9; ++n) {
           double* row = dr_dT + 9 * n;
           const double bt = -ca * b * T[n];
@@ -93,9 +128,30 @@ class PolarShapeMetric final : public FixedMetric {
   }
 
  private:
+  // r = c F(S); dr/dT = c dF/dS a (I - vec(T) g^t / 3) with g = T^-t = C / tau. F is homogeneous
+  // of degree 3/2, so (dF/dS) vec(S) = (3/2) F and dr/dT = c (a dF/dS - F g^t / 2).
+  bool cofactor_residuals(double a, double tau, const double* S, const double* C, double* r,
+                          double* dr_dT) const {
+    double F[9];
+    if (!conformal_residual(S, F, dr_dT)) return false;
+    for (int n = 0; n < 9; ++n) {
+      r[n] = c_ * F[n];
+      if (!std::isfinite(r[n])) return false;
+    }
+    if (dr_dT != nullptr) {
+      const double ca = c_ * a, h = -0.5 * c_ / tau;
+      for (int i = 0; i < 9; ++i) {
+        double* row = dr_dT + 9 * i;
+        const double hf = h * F[i];
+        for (int m = 0; m < 9; ++m) row[m] = ca * row[m] + hf * C[m];
+      }
+    }
+    return true;
+  }
+
   Shape3dForm form_;
   double c_;
-  bool rotation_fixed_;
+  Shape3dResidual residual_;
 };
 
 class ConformalShapeMetric final : public FixedMetric {
@@ -109,56 +165,28 @@ class ConformalShapeMetric final : public FixedMetric {
   }
 
   bool residuals(const double* T, double* r, double* dr_dT) const override {
-    const double f2 = small_matrix::frobenius2<3>(T);
-    if (!std::isfinite(f2)) return false;
-    const double n = std::sqrt(f2 / 3.0);
-    if (!(n > 1e-150)) {  // T = 0 (a minimiser): r -> 0 and dr/dT -> 0 like |T|^(3/2), |T|^(1/2)
-      for (int m = 0; m < 9; ++m) r[m] = 0.0;
-      if (dr_dT != nullptr) {
-        for (int m = 0; m < 81; ++m) dr_dT[m] = 0.0;
-      }
-      return true;
-    }
-    double C[9];
-    small_matrix::cofactor<3>(T, C);
-    const double sn = std::sqrt(n);
-    const double u = 0.5 / sn;  // r = u cof - v T
-    const double v = 0.5 * sn;
-    for (int m = 0; m < 9; ++m) r[m] = u * C[m] - v * T[m];
-    if (dr_dT != nullptr) {
-      // dr = u dcof - v I - cof (x) T / (12 n^(5/2)) - T (x) T / (12 n^(3/2)).
-      small_matrix::cofactor_derivative_3(T, dr_dT);
-      const double p = 1.0 / (12.0 * n * n * sn);
-      const double q = n * p;
-      for (int i = 0; i < 9; ++i) {
-        double* row = dr_dT + 9 * i;
-        const double ai = -(p * C[i] + q * T[i]);
-        for (int m = 0; m < 9; ++m) row[m] = u * row[m] + ai * T[m];
-        row[i] -= v;
-      }
-    }
-    return true;
+    return conformal_residual(T, r, dr_dT);
   }
 };
 
 }  // namespace
 
-std::unique_ptr<Metric> make_shape_3d_metric(Shape3dForm form, bool rotation_fixed_jacobian) {
+std::unique_ptr<Metric> make_shape_3d_metric(Shape3dForm form, Shape3dResidual residual) {
   switch (form) {
     case Shape3dForm::kNonBarrier:
       return std::make_unique<ConformalShapeMetric>();
     case Shape3dForm::kBarrier:
-      return std::make_unique<PolarShapeMetric>(form, "shape_barrier_3d", "mu_303", 2.0 / 3.0,
-                                                rotation_fixed_jacobian);
+      return std::make_unique<BarrierShapeMetric>(form, "shape_barrier_3d", "mu_303", 2.0 / 3.0,
+                                                  residual);
     case Shape3dForm::kCubicBarrier:
-      return std::make_unique<PolarShapeMetric>(form, "shape_cubic_barrier_3d", "mu_304", 1.0,
-                                                rotation_fixed_jacobian);
+      return std::make_unique<BarrierShapeMetric>(form, "shape_cubic_barrier_3d", "mu_304", 1.0,
+                                                  residual);
     case Shape3dForm::kConditionBarrier:
-      return std::make_unique<PolarShapeMetric>(form, "condition_barrier_3d", "mu_301", 2.0 / 3.0,
-                                                rotation_fixed_jacobian);
+      return std::make_unique<BarrierShapeMetric>(form, "condition_barrier_3d", "mu_301", 2.0 / 3.0,
+                                                  residual);
     case Shape3dForm::kConditionSquaredBarrier:
-      return std::make_unique<PolarShapeMetric>(form, "condition_squared_barrier_3d", "mu_302",
-                                                4.0 / 3.0, rotation_fixed_jacobian);
+      return std::make_unique<BarrierShapeMetric>(form, "condition_squared_barrier_3d", "mu_302",
+                                                  4.0 / 3.0, residual);
   }
   return nullptr;
 }

@@ -26,10 +26,18 @@
 //     Because R minimises |S - Q|^2 over rotations Q, R^t (S - R) = P - I is symmetric while
 //     dR = R W with W skew, so (c dR)^t r = 0: J^t r equals the gradient of |r|^2 / 2 computed
 //     with R held fixed, c^2 (dS/dT)^t vec(S - R).
-//   * make_shape_3d_metric(form, true) gives the cheaper rotation-fixed Jacobian c dS/dT instead:
-//     the same gradient J^t r, but J^t J adds stiffness c^2 tau^(-2/3) |W T|^2 along the
-//     rotations dT = W T of the element.
+//   * Shape3dResidual::kPolarRotationFixed gives the cheaper rotation-fixed Jacobian c dS/dT
+//     instead: the same gradient J^t r, but J^t J adds stiffness c^2 tau^(-2/3) |W T|^2 along
+//     the rotations dT = W T of the element.
 //   R comes from a scaled Newton polar iteration (small_matrix.h), no SVD.
+//
+// Cofactor residual form of the barrier metrics (Shape3dResidual::kCofactor): the mu_360 form
+// below applied to S, r = c vec(cof S - n S) / (2 sqrt(n)), n = |S| / sqrt(3). Since det S = 1,
+// mu_360(S) = mu_304(T), so |r|^2 agrees with mu_304 to second order for c = 1 (and with the
+// others for the same c as the polar form); zero exactly on T = s R; barrier (|r|^2 grows like
+// tau^(-1) as tau -> 0+, like mu_304); scale and rotation invariant. No iteration, exact
+// Jacobian: about twice as fast as kPolar. Its growth with stretching (cubic in the largest
+// singular value of S) follows mu_304 closely and is steeper than mu_303.
 //
 // Non-barrier metric, defined for every T (inverted ones included):
 //   shape_3d  mu_360  |T|^3 / (3 sqrt(3)) - tau  ( = tau mu_304 for tau > 0 ),
@@ -57,9 +65,16 @@ enum class Shape3dForm {
   kConditionSquaredBarrier,  // condition_squared_barrier_3d, mu_302
 };
 
-// rotation_fixed_jacobian: see above (barrier forms only; the registry uses false).
+// Residual form of the barrier metrics (ignored by kNonBarrier, which always uses its cofactor
+// form). The registry (make_metric) uses kPolar.
+enum class Shape3dResidual {
+  kPolar,               // c vec(S - R), exact Jacobian including dR/dS
+  kPolarRotationFixed,  // c vec(S - R), Jacobian with R held fixed (cheaper, same J^t r)
+  kCofactor,            // c vec(cof S - n S) / (2 sqrt n), n = |S| / sqrt3: no polar iteration
+};
+
 std::unique_ptr<Metric> make_shape_3d_metric(Shape3dForm form,
-                                             bool rotation_fixed_jacobian = false);
+                                             Shape3dResidual residual = Shape3dResidual::kPolar);
 
 }  // namespace tmop
 
