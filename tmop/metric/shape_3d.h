@@ -36,7 +36,7 @@
 // mu_360(S) = mu_304(T), so |r|^2 agrees with mu_304 to second order for c = 1 (and with the
 // others for the same c as the polar form); zero exactly on T = s R; barrier (|r|^2 grows like
 // tau^(-1) as tau -> 0+, like mu_304); scale and rotation invariant. No iteration, exact
-// Jacobian: about twice as fast as kPolar. Its growth with stretching (cubic in the largest
+// Jacobian: about 1.6x the throughput of kPolar. Its growth with stretching (cubic in the largest
 // singular value of S) follows mu_304 closely and is steeper than mu_303.
 //
 // Non-barrier metric, defined for every T (inverted ones included):
