@@ -1,0 +1,230 @@
+#include "tmop/geometry/boundary_constraints.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "tmop/geometry/geometry_source.h"
+#include "tmop/geometry/plane_manifold.h"
+#include "tmop/geometry/polyline_manifold.h"
+#include "tmop/geometry/triangle_surface_manifold.h"
+#include "tmop/geometry/vec3.h"
+
+namespace tmop {
+namespace {
+
+// The patch's triangles on a compact copy of their vertices (the patch owns its geometry).
+std::unique_ptr<GeometryManifold> patch_manifold(const Mesh& mesh, const BoundaryPatch& patch,
+                                                 std::vector<std::int32_t>* local) {
+  if (patch.planar) return std::make_unique<PlaneManifold>(patch.point, patch.normal);
+  std::vector<double> vertices;
+  std::vector<std::int32_t> triangles;
+  std::vector<std::int32_t> touched;
+  for (const auto& t : patch.triangles) {
+    for (std::int32_t v : t) {
+      if ((*local)[v] < 0) {
+        (*local)[v] = static_cast<std::int32_t>(vertices.size() / 3);
+        vertices.insert(vertices.end(), mesh.vertex(v), mesh.vertex(v) + 3);
+        touched.push_back(v);
+      }
+      triangles.push_back((*local)[v]);
+    }
+  }
+  for (std::int32_t v : touched) (*local)[v] = -1;
+  return std::make_unique<TriangleSurfaceManifold>(std::move(vertices), triangles);
+}
+
+}  // namespace
+
+BoundaryConstraints::~BoundaryConstraints() = default;
+
+Status BoundaryConstraints::Build(const Mesh& mesh, const BoundaryOptions& options,
+                                  std::unique_ptr<BoundaryConstraints>* out) {
+  std::unique_ptr<BoundaryConstraints> bc(new BoundaryConstraints());
+  ClassifyOptions classify;
+  classify.feature_angle_deg = options.feature_angle_deg;
+  Status s = classify_boundary(mesh, classify, &bc->classification_);
+  if (!s.ok()) return s;
+  GeometrySource source;
+  s = load_geometry_source(options.geometry, &source);
+  if (!s.ok()) return s;
+  const int dim = mesh.dim();
+  const int space = mesh.space_dim;
+  const bool surface_mesh = dim == 2 && space == 3;
+  if (source.surface && space != 3) {
+    return Status::Failure("geometry '" + options.geometry + "': a 2D mesh has no surfaces");
+  }
+  const BoundaryClassification& c = bc->classification_;
+  const int nv = mesh.num_vertices();
+  bc->space_dim_ = space;
+  bc->slide_ = options.slide;
+  bc->geometry_description_ = source.description;
+  bc->original_ = mesh.coords;
+  bc->kind_ = c.kind;
+  bc->slot_.assign(nv, -1);
+  bc->normal_slot_.assign(nv, -1);
+  bc->normal_sign_.assign(nv, 1);
+
+  // One manifold per curve, then one per patch, then the user's.
+  for (const BoundaryCurve& curve : c.curves) {
+    std::vector<double> points;
+    auto add = [&](std::int32_t v) {
+      points.insert(points.end(), mesh.vertex(v), mesh.vertex(v) + space);
+    };
+    if (curve.straight) {
+      add(curve.vertices.front());
+      add(curve.vertices.back());
+    } else {
+      for (std::int32_t v : curve.vertices) add(v);
+    }
+    bc->manifolds_.push_back(std::make_unique<PolylineManifold>(space, points, curve.closed));
+  }
+  const int first_patch = static_cast<int>(bc->manifolds_.size());
+  std::vector<std::int32_t> local(nv, -1);
+  for (const BoundaryPatch& patch : c.patches) {
+    bc->manifolds_.push_back(patch_manifold(mesh, patch, &local));
+  }
+  int user = -1;
+  if (source.surface) {
+    user = static_cast<int>(bc->manifolds_.size());
+    bc->manifolds_.push_back(std::move(source.surface));
+  }
+
+  for (int v = 0; v < nv; ++v) {
+    if (c.kind[v] == VertexKind::kCurve) bc->slot_[v] = c.id[v];
+    if (c.kind[v] == VertexKind::kSurface) bc->slot_[v] = first_patch + c.id[v];
+    if (c.vertex_patch[v] >= 0) bc->normal_slot_[v] = first_patch + c.vertex_patch[v];
+  }
+
+  // User geometry: surface vertices of curved patches that lie on it with their neighbours.
+  if (user >= 0) {
+    double edge_sum = 0;
+    long edge_count = 0;
+    for (const BoundaryPatch& patch : c.patches) {
+      for (const auto& t : patch.triangles) {
+        for (int k = 0; k < 3; ++k) {
+          double e[3];
+          vec3::sub(mesh.vertex(t[k]), mesh.vertex(t[(k + 1) % 3]), e);
+          edge_sum += vec3::norm(e);
+          ++edge_count;
+        }
+      }
+    }
+    const double tol = options.on_geometry_tolerance * edge_sum / std::max(edge_count, 1L);
+    const GeometryManifold& g = *bc->manifolds_[user];
+    std::vector<char> on(nv, 0), rejected(nv, 0);
+    for (const BoundaryPatch& patch : c.patches) {
+      if (patch.planar) continue;
+      for (const auto& t : patch.triangles) {
+        bool all = true;
+        for (std::int32_t v : t) {
+          if (on[v] == 0) on[v] = g.Distance(mesh.vertex(v)) <= tol ? 1 : 2;
+          all = all && on[v] == 1;
+        }
+        if (!all) {
+          for (std::int32_t v : t) rejected[v] = 1;
+        }
+      }
+    }
+    for (int v = 0; v < nv; ++v) {
+      if (c.kind[v] != VertexKind::kSurface || c.patches[c.id[v]].planar) continue;
+      if (on[v] == 1 && !rejected[v]) {
+        bc->slot_[v] = user;
+        bc->normal_slot_[v] = user;
+        ++bc->num_on_user_geometry_;
+      }
+    }
+  }
+
+  if (!options.slide) {
+    for (int v = 0; v < nv; ++v) {
+      const bool keep = surface_mesh && c.kind[v] == VertexKind::kSurface;
+      if (c.kind[v] != VertexKind::kInterior && !keep) {
+        bc->kind_[v] = VertexKind::kFixed;
+        bc->slot_[v] = -1;
+      }
+    }
+  }
+  for (int v = 0; v < nv; ++v) {
+    if (bc->kind_[v] == VertexKind::kFixed) bc->slot_[v] = -1;
+  }
+
+  // Orient the geometry's normals like the mesh: compare with the area-weighted normal of the
+  // vertex's patch triangles (analytic and file geometries have their own orientation).
+  if (space == 3) {
+    std::vector<double> mesh_normal(3 * static_cast<std::size_t>(nv), 0.0);
+    for (const BoundaryPatch& patch : c.patches) {
+      for (const auto& t : patch.triangles) {
+        double e1[3], e2[3], n[3];
+        vec3::sub(mesh.vertex(t[1]), mesh.vertex(t[0]), e1);
+        vec3::sub(mesh.vertex(t[2]), mesh.vertex(t[0]), e2);
+        vec3::cross(e1, e2, n);
+        for (std::int32_t v : t) {
+          for (int i = 0; i < 3; ++i) mesh_normal[3 * v + i] += n[i];
+        }
+      }
+    }
+    for (int v = 0; v < nv; ++v) {
+      const int slot = bc->normal_slot_[v];
+      double n[3];
+      if (slot < 0 || !bc->manifolds_[slot]->Normal(mesh.vertex(v), n)) continue;
+      if (vec3::dot(n, &mesh_normal[3 * v]) < 0) bc->normal_sign_[v] = -1;
+    }
+  }
+  *out = std::move(bc);
+  return Status::Ok();
+}
+
+std::vector<char> BoundaryConstraints::fixed_flags() const {
+  std::vector<char> flags(kind_.size());
+  for (std::size_t v = 0; v < kind_.size(); ++v) flags[v] = kind_[v] == VertexKind::kFixed;
+  return flags;
+}
+
+const ceres::Manifold* BoundaryConstraints::manifold(int vertex) const { return geometry(vertex); }
+
+const GeometryManifold* BoundaryConstraints::geometry(int vertex) const {
+  const int slot = slot_[vertex];
+  return slot < 0 ? nullptr : manifolds_[slot].get();
+}
+
+bool BoundaryConstraints::normal(int vertex, const double* x, double* n) const {
+  const int slot = normal_slot_[vertex];
+  if (slot < 0 || space_dim_ != 3) return false;
+  if (!manifolds_[slot]->Normal(x, n)) return false;
+  if (normal_sign_[vertex] < 0) {
+    for (int i = 0; i < 3; ++i) n[i] = -n[i];
+  }
+  return true;
+}
+
+double BoundaryConstraints::distance(int vertex, const double* x) const {
+  if (const GeometryManifold* g = geometry(vertex)) return g->Distance(x);
+  if (kind_[vertex] != VertexKind::kFixed) return 0;
+  double s = 0;
+  for (int i = 0; i < space_dim_; ++i) {
+    const double d = x[i] - original_[static_cast<std::size_t>(vertex) * space_dim_ + i];
+    s += d * d;
+  }
+  return std::sqrt(s);
+}
+
+int BoundaryConstraints::count(VertexKind kind) const {
+  int n = 0;
+  for (VertexKind k : kind_) n += k == kind;
+  return n;
+}
+
+std::string BoundaryConstraints::summary() const {
+  int planar = 0;
+  for (const BoundaryPatch& p : classification_.patches) planar += p.planar;
+  std::ostringstream os;
+  os << (slide_ ? "slide: " : "fixed boundary: ") << count(VertexKind::kFixed) << " fixed, "
+     << count(VertexKind::kCurve) << " curve, " << count(VertexKind::kSurface) << " surface, "
+     << count(VertexKind::kInterior) << " interior; " << classification_.curves.size()
+     << " curves, " << classification_.patches.size() << " patches (" << planar
+     << " planar); geometry: " << geometry_description_;
+  if (num_on_user_geometry_ > 0) os << " (" << num_on_user_geometry_ << " vertices)";
+  return os.str();
+}
+
+}  // namespace tmop

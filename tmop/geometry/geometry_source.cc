@@ -1,0 +1,83 @@
+#include "tmop/geometry/geometry_source.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <vector>
+
+#include "tmop/geometry/cylinder_manifold.h"
+#include "tmop/geometry/plane_manifold.h"
+#include "tmop/geometry/reference_surface.h"
+#include "tmop/geometry/sphere_manifold.h"
+#include "tmop/geometry/triangle_surface_manifold.h"
+
+namespace tmop {
+namespace {
+
+// Parses exactly `count` comma-separated finite numbers.
+bool parse_numbers(const std::string& text, int count, std::vector<double>* values) {
+  values->clear();
+  const char* p = text.c_str();
+  for (int i = 0; i < count; ++i) {
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(p, &end);
+    if (end == p || errno != 0 || !std::isfinite(v)) return false;
+    values->push_back(v);
+    p = end;
+    if (i + 1 < count) {
+      if (*p != ',') return false;
+      ++p;
+    }
+  }
+  return *p == '\0';
+}
+
+double norm3(const double* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+}  // namespace
+
+Status load_geometry_source(const std::string& spec, GeometrySource* out) {
+  *out = GeometrySource();
+  if (spec.empty()) {
+    out->description = "own boundary";
+    return Status::Ok();
+  }
+  const std::size_t colon = spec.find(':');
+  const std::string name = colon == std::string::npos ? "" : spec.substr(0, colon);
+  if (name == "sphere" || name == "plane" || name == "cylinder") {
+    const int count = name == "sphere" ? 4 : (name == "plane" ? 6 : 7);
+    std::vector<double> x;
+    if (!parse_numbers(spec.substr(colon + 1), count, &x)) {
+      return Status::Failure("geometry '" + spec + "': expected " + std::to_string(count) +
+                             " comma-separated numbers after '" + name + ":'");
+    }
+    out->kind = GeometrySourceKind::kAnalytic;
+    out->description = name;
+    if (name == "sphere") {
+      if (!(x[3] > 0)) return Status::Failure("geometry '" + spec + "': radius must be > 0");
+      out->surface = std::make_unique<SphereManifold>(x.data(), x[3]);
+    } else if (name == "plane") {
+      if (norm3(&x[3]) == 0) return Status::Failure("geometry '" + spec + "': zero normal");
+      out->surface = std::make_unique<PlaneManifold>(x.data(), &x[3]);
+    } else {
+      if (norm3(&x[3]) == 0) return Status::Failure("geometry '" + spec + "': zero axis");
+      if (!(x[6] > 0)) return Status::Failure("geometry '" + spec + "': radius must be > 0");
+      out->surface = std::make_unique<CylinderManifold>(x.data(), &x[3], x[6]);
+    }
+    return Status::Ok();
+  }
+  std::vector<double> vertices;
+  std::vector<std::int32_t> triangles;
+  const Status s = read_reference_surface(spec, &vertices, &triangles);
+  if (!s.ok()) {
+    return Status::Failure(s.message() +
+                           " (geometry: sphere:cx,cy,cz,r | plane:p,n | cylinder:p,d,r | FILE)");
+  }
+  out->kind = GeometrySourceKind::kSurfaceFile;
+  out->description = spec;
+  out->surface = std::make_unique<TriangleSurfaceManifold>(std::move(vertices), triangles);
+  return Status::Ok();
+}
+
+}  // namespace tmop
