@@ -27,6 +27,9 @@ struct Case {
   std::string name;
 };
 
+// Readable test parameters in gtest and ctest output.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 std::vector<Case> all_cases() {
   std::vector<Case> cases;
   for (int d = 2; d <= 3; ++d) {
