@@ -1,0 +1,795 @@
+// tmop_bench: one reproducible, measured run with a JSON record (docs/benchmarks.md).
+//
+//   tmop_bench --input=MESH --task=TASK [--threads=N] [--repeat=K] [--json=FILE]
+//              [--reference=FILE] [--max_iterations=N] [--max_seconds=S]
+//
+// Tasks:
+//   read      read_mesh (the mesh is read K times)
+//   quality   measure_mesh (the optimizer's per-iteration measure) and compute_quality (the full
+//             report of tmop_quality), each timed
+//   shape     the improve_shape recipe with its defaults (what tmop_optimize --recipe=shape runs)
+//   untangle  the untangle recipe (untangle only; --then_shape adds the shape stage)
+//   evaluate  the cost of one residual + Jacobian pass through Ceres: a ceres::Problem built like
+//             optimize_stage's (one SamplePointCost per sample point with a free node, parameter
+//             blocks = the vertex coordinates, boundary constant), timed with
+//             Problem::Evaluate(cost, gradient) K times (Ceres evaluates every block's residuals
+//             and Jacobians and sums J^T r); also the problem-construction time, and one Ceres
+//             iteration measured as optimize_stage(max_iterations=1) - optimize_stage(0); and
+//             the floor below, so the record carries the ratio.
+//   floor     a hand-written lower bound of that pass without Ceres: T = sum_i x_i G_i^T with
+//             precomputed G_i = W^-T grad N_i, the metric's residuals and dr/dT (tmop::Metric),
+//             dF/dT = sum_k r_k dr_k/dT, gradient accumulated into a vertex array; one thread.
+//   perturb   writes --output: interior vertices moved in a random direction by --amount x their
+//             shortest incident edge (fixed --seed); --keep_valid retries (20 tries) moves that
+//             would invert an incident element, otherwise the move is kept whatever it does.
+//
+// Timings: wall (steady clock) and CPU (getrusage user+sys, all threads) around the measured
+// part only (reading the mesh is outside, except for --task=read); peak RSS is the process's
+// (ru_maxrss). With --repeat=K the task runs K times on fresh copies of the input; the record
+// gives the median and the minimum and every run's wall time. The load average at the start is
+// recorded because shared machines make wall times noisy.
+#include <ceres/ceres.h>
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+#include <sys/resource.h>
+#include <sys/utsname.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <ctime>
+#include <deque>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tmop/element/sample_points.h"
+#include "tmop/element/shape.h"
+#include "tmop/io/mesh_io.h"
+#include "tmop/mesh/orientation.h"
+#include "tmop/mesh/topology.h"
+#include "tmop/mesh/validate.h"
+#include "tmop/optimize/sample_point_cost.h"
+#include "tmop/optimize/stage.h"
+#include "tmop/quality/quality_report.h"
+#include "tmop/recipes/improve_shape.h"
+#include "tmop/recipes/recipe_result.h"
+#include "tmop/recipes/untangle.h"
+#include "tmop/target/target.h"
+
+DEFINE_string(input, "", "Input mesh (any format read_mesh reads).");
+DEFINE_string(task, "shape", "read, quality, shape, untangle, evaluate, floor or perturb.");
+DEFINE_int32(threads, 0, "Threads for Ceres (0 = all hardware threads). floor is one thread.");
+DEFINE_int32(repeat, 1, "Run the task this many times; times are reported per run.");
+DEFINE_string(json, "", "Also write the JSON record to this file.");
+DEFINE_string(reference, "", "Reference mesh: targets are its Jacobians (--target=reference).");
+DEFINE_string(metric, "", "Metric (default: the recipe's shape metric).");
+DEFINE_int32(max_iterations, 200, "Maximum Ceres iterations per stage (shape, untangle).");
+DEFINE_double(max_seconds, 1e9, "Wall-clock cap per stage, seconds (shape, untangle).");
+DEFINE_bool(then_shape, false, "untangle: run the shape stage after untangling (recipe auto).");
+DEFINE_bool(verbose, false, "Print the solver's progress lines.");
+DEFINE_string(output, "", "perturb: the perturbed mesh (binary .msh 4.1 when .msh).");
+DEFINE_double(amount, 0.3, "perturb: move length as a fraction of the shortest incident edge.");
+DEFINE_int64(seed, 1, "perturb: random seed.");
+DEFINE_bool(keep_valid, true, "perturb: never invert an element (retry the move).");
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+int fail(int code, const std::string& message) {
+  std::fprintf(stderr, "tmop_bench: %s\n", message.c_str());
+  return code;
+}
+
+double cpu_seconds() {
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+double peak_rss_mb() {
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;  // kilobytes on Linux
+}
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\n");
+  const auto e = s.find_last_not_of(" \t\n");
+  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
+}
+
+// The value after "key" and ':' in the first line of FILE that starts with key, or "".
+std::string proc_field(const char* file, const std::string& key) {
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.compare(0, key.size(), key) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return trim(line.substr(colon + 1));
+    }
+  return "";
+}
+
+std::string command_output(const std::string& command) {
+  std::string out;
+  if (FILE* p = popen(command.c_str(), "r")) {
+    char buf[256];
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
+    pclose(p);
+  }
+  return trim(out);
+}
+
+// Short commit of the checkout this file was compiled from, "-dirty" when tmop/ has local
+// changes (the engine being measured is then not exactly the commit).
+std::string git_commit() {
+  std::string dir = __FILE__;
+  dir = dir.substr(0, dir.find_last_of('/'));
+  const std::string git = "git -C '" + dir + "' ";
+  std::string c = command_output(git + "rev-parse --short HEAD 2>/dev/null");
+  if (c.empty()) return "unknown";
+  if (!command_output(git + "status --porcelain --untracked-files=no -- ../tmop 2>/dev/null")
+           .empty())
+    c += "-dirty";
+  return c;
+}
+
+std::string utc_now() {
+  char buf[32];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
+double load_average() {
+  std::ifstream in("/proc/loadavg");
+  double l = -1;
+  in >> l;
+  return l;
+}
+
+// A JSON object built field by field (keys in insertion order).
+class Json {
+ public:
+  Json& num(const std::string& k, double v) { return raw(k, tmop::json_number(v)); }
+  Json& integer(const std::string& k, long long v) { return raw(k, std::to_string(v)); }
+  Json& str(const std::string& k, const std::string& v) { return raw(k, tmop::json_string(v)); }
+  Json& boolean(const std::string& k, bool v) { return raw(k, v ? "true" : "false"); }
+  Json& obj(const std::string& k, const Json& v) { return raw(k, v.text()); }
+  Json& nums(const std::string& k, const std::vector<double>& v) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + tmop::json_number(v[i]);
+    return raw(k, s + "]");
+  }
+  Json& raw(const std::string& k, const std::string& v) {
+    fields_ += (fields_.empty() ? "" : ", ") + tmop::json_string(k) + ": " + v;
+    return *this;
+  }
+  std::string text() const { return "{" + fields_ + "}"; }
+
+ private:
+  std::string fields_;
+};
+
+Json machine_json() {
+  Json m;
+  utsname u;
+  uname(&u);
+  m.integer("nproc", std::thread::hardware_concurrency())
+      .str("cpu", proc_field("/proc/cpuinfo", "model name"))
+      .num("memory_gb", std::atof(proc_field("/proc/meminfo", "MemTotal").c_str()) / 1048576.0)
+      .str("kernel", std::string(u.sysname) + " " + u.release);
+  return m;
+}
+
+Json mesh_json(const tmop::Mesh& mesh, const std::string& path) {
+  const std::vector<int> counts = mesh.count_by_type();
+  const int d = mesh.dim();
+  std::string types;
+  for (int t = 0; t < tmop::kNumCellTypes; ++t) {
+    const auto type = static_cast<tmop::CellType>(t);
+    if (counts[t] == 0 || tmop::cell_dim(type) != d) continue;
+    types += (types.empty() ? "" : "+") + std::string(tmop::cell_name(type));
+  }
+  Json j;
+  j.str("path", path)
+      .integer("elements", mesh.num_elements())
+      .integer("vertices", mesh.num_vertices())
+      .str("type", types)
+      .integer("dim", d);
+  return j;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Wall and CPU time of the measured parts of K runs.
+struct Timing {
+  std::vector<double> wall, cpu;
+  Clock::time_point t0;
+  double c0 = 0;
+  void start() {
+    c0 = cpu_seconds();
+    t0 = Clock::now();
+  }
+  void stop() {
+    wall.push_back(seconds_since(t0));
+    cpu.push_back(cpu_seconds() - c0);
+  }
+  void add_to(Json* j) const {
+    j->num("wall_seconds", median(wall))
+        .num("wall_seconds_min", wall.empty() ? 0 : *std::min_element(wall.begin(), wall.end()))
+        .num("cpu_seconds", median(cpu))
+        .nums("wall_seconds_all", wall);
+  }
+};
+
+// ---- the per-sample-point data shared by evaluate and floor ----------------------------------
+
+// Sample points with a free node, their cells, and G_i = W^-T grad N_i (compact: n*d per point).
+struct PointTable {
+  std::vector<std::int32_t> cell;
+  std::vector<std::int64_t> offset;  // into G, size + 1
+  std::vector<double> G;
+  std::vector<double> weight;  // sqrt of the rule weight, as optimize_stage applies it
+};
+
+bool invert(const double* A, int d, double* Ainv) {
+  if (d == 2) {
+    const double det = A[0] * A[3] - A[1] * A[2];
+    if (!(det != 0)) return false;
+    Ainv[0] = A[3] / det, Ainv[1] = -A[1] / det, Ainv[2] = -A[2] / det, Ainv[3] = A[0] / det;
+    return true;
+  }
+  const double c0 = A[4] * A[8] - A[5] * A[7], c1 = A[5] * A[6] - A[3] * A[8],
+               c2 = A[3] * A[7] - A[4] * A[6];
+  const double det = A[0] * c0 + A[1] * c1 + A[2] * c2;
+  if (!(det != 0)) return false;
+  Ainv[0] = c0 / det, Ainv[1] = (A[2] * A[7] - A[1] * A[8]) / det;
+  Ainv[2] = (A[1] * A[5] - A[2] * A[4]) / det, Ainv[3] = c1 / det;
+  Ainv[4] = (A[0] * A[8] - A[2] * A[6]) / det, Ainv[5] = (A[2] * A[3] - A[0] * A[5]) / det;
+  Ainv[6] = c2 / det, Ainv[7] = (A[1] * A[6] - A[0] * A[7]) / det;
+  Ainv[8] = (A[0] * A[4] - A[1] * A[3]) / det;
+  return true;
+}
+
+tmop::Status build_points(const tmop::Mesh& mesh, const tmop::TargetSpec& target,
+                          const std::vector<char>& fixed, PointTable* pt) {
+  const int d = mesh.dim();
+  std::vector<double> W;
+  tmop::Status s = tmop::build_targets(mesh, tmop::SampleRule::kDefault, target, &W);
+  if (!s.ok()) return s;
+  pt->offset.assign(1, 0);
+  std::size_t p = 0;
+  double grad[tmop::kMaxCellNodes * 3], Winv[9];
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!mesh.is_element(c, d)) continue;
+    const tmop::CellType type = mesh.cell_type(c);
+    const int n = mesh.cell_size(c);
+    bool any_free = false;
+    for (int i = 0; i < n; ++i) any_free |= !fixed[mesh.cell(c)[i]];
+    for (const tmop::SamplePoint& sp : tmop::sample_points(type, tmop::SampleRule::kDefault)) {
+      const double* Wp = W.data() + d * d * p++;
+      if (!any_free) continue;
+      if (!invert(Wp, d, Winv)) return tmop::Status::Failure("singular target");
+      tmop::shape_gradients(type, sp.xi, grad);
+      for (int i = 0; i < n; ++i)
+        for (int b = 0; b < d; ++b) {
+          double v = 0;
+          for (int c2 = 0; c2 < d; ++c2) v += Winv[c2 * d + b] * grad[i * d + c2];
+          pt->G.push_back(v);
+        }
+      pt->cell.push_back(c);
+      pt->offset.push_back(static_cast<std::int64_t>(pt->G.size()));
+      pt->weight.push_back(std::sqrt(sp.weight));
+    }
+  }
+  return tmop::Status::Ok();
+}
+
+// One residual + gradient pass (the floor). Returns 0.5 |r|^2 like Ceres's cost; false when the
+// metric fails (a barrier metric at an inverted point).
+bool floor_pass(const tmop::Mesh& mesh, const PointTable& pt, const tmop::Metric& metric,
+                std::vector<double>* gradient, double* cost) {
+  const int d = mesh.dim(), dd = d * d, m = metric.num_residuals();
+  gradient->assign(mesh.coords.size(), 0.0);
+  double* g = gradient->data();
+  double sum = 0;
+  for (std::size_t p = 0; p < pt.cell.size(); ++p) {
+    const std::int32_t* nodes = mesh.cell(pt.cell[p]);
+    const double* G = pt.G.data() + pt.offset[p];
+    const int n = static_cast<int>((pt.offset[p + 1] - pt.offset[p]) / d);
+    double T[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    for (int i = 0; i < n; ++i) {
+      const double* x = mesh.vertex(nodes[i]);
+      const double* gi = G + i * d;
+      for (int a = 0; a < d; ++a)
+        for (int b = 0; b < d; ++b) T[a * d + b] += x[a] * gi[b];
+    }
+    double r[tmop::kMaxMetricResiduals], dr[tmop::kMaxMetricResiduals * 9];
+    if (!metric.residuals(T, r, dr)) return false;
+    const double w = pt.weight[p], w2 = w * w;
+    double P[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};  // dF/dT of 0.5 w^2 |r|^2
+    for (int k = 0; k < m; ++k) {
+      sum += w2 * r[k] * r[k];
+      for (int q = 0; q < dd; ++q) P[q] += w2 * r[k] * dr[k * dd + q];
+    }
+    for (int i = 0; i < n; ++i) {
+      double* gv = g + static_cast<std::size_t>(nodes[i]) * d;
+      const double* gi = G + i * d;
+      for (int a = 0; a < d; ++a) {
+        double v = 0;
+        for (int b = 0; b < d; ++b) v += P[a * d + b] * gi[b];
+        gv[a] += v;
+      }
+    }
+  }
+  *cost = 0.5 * sum;
+  return true;
+}
+
+// ---- perturbation ------------------------------------------------------------------------------
+
+// splitmix64: a portable stream of 64-bit values (std distributions differ between libraries).
+struct Rng {
+  std::uint64_t s;
+  std::uint64_t next() {
+    std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  double uniform() { return (next() >> 11) * (1.0 / 9007199254740992.0) * 2 - 1; }  // [-1, 1)
+};
+
+bool cell_valid(const tmop::Mesh& mesh, int c) {
+  const tmop::CellType type = mesh.cell_type(c);
+  const int d = mesh.space_dim, n = mesh.cell_size(c);
+  double xs[tmop::kMaxCellNodes * 3], A[9];
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < d; ++a) xs[i * d + a] = mesh.vertex(mesh.cell(c)[i])[a];
+  for (const tmop::SamplePoint& sp : tmop::sample_points(type, tmop::SampleRule::kDefault)) {
+    tmop::cell_jacobian(type, xs, d, sp.xi, A);
+    const double det = d == 2 ? A[0] * A[3] - A[1] * A[2]
+                              : A[0] * (A[4] * A[8] - A[5] * A[7]) -
+                                    A[1] * (A[3] * A[8] - A[5] * A[6]) +
+                                    A[2] * (A[3] * A[7] - A[4] * A[6]);
+    if (!(det > 0)) return false;
+  }
+  return true;
+}
+
+void perturb(tmop::Mesh* mesh, double amount, std::uint64_t seed, bool keep_valid, int* moved) {
+  const int d = mesh->dim(), sd = mesh->space_dim, nv = mesh->num_vertices();
+  const std::vector<char> boundary = tmop::boundary_vertex_mask(*mesh);
+  const tmop::Adjacency adj = tmop::vertex_to_cells(*mesh);
+  std::vector<double> shortest(nv, std::numeric_limits<double>::infinity());
+  for (int c = 0; c < mesh->num_cells(); ++c) {
+    if (!mesh->is_element(c, d)) continue;
+    const tmop::CellInfo& info = tmop::cell_info(mesh->cell_type(c));
+    const std::int32_t* nodes = mesh->cell(c);
+    for (int e = 0; e < info.num_edges; ++e) {
+      const int a = nodes[info.edges[e][0]], b = nodes[info.edges[e][1]];
+      double l2 = 0;
+      for (int k = 0; k < sd; ++k) {
+        const double t = mesh->vertex(a)[k] - mesh->vertex(b)[k];
+        l2 += t * t;
+      }
+      const double l = std::sqrt(l2);
+      shortest[a] = std::min(shortest[a], l);
+      shortest[b] = std::min(shortest[b], l);
+    }
+  }
+  *moved = 0;
+  for (int v = 0; v < nv; ++v) {
+    if (boundary[v] || adj.offsets[v] == adj.offsets[v + 1] || !std::isfinite(shortest[v]))
+      continue;
+    Rng rng{seed * 1000003ULL + static_cast<std::uint64_t>(v)};
+    double* x = mesh->vertex(v);
+    double old[3] = {0, 0, 0};
+    for (int a = 0; a < sd; ++a) old[a] = x[a];
+    for (int attempt = 0; attempt < 20; ++attempt) {
+      double dir[3] = {0, 0, 0}, norm2 = 0;
+      do {  // uniform direction: rejection-sample the unit ball
+        norm2 = 0;
+        for (int a = 0; a < sd; ++a) {
+          dir[a] = rng.uniform();
+          norm2 += dir[a] * dir[a];
+        }
+      } while (norm2 > 1 || norm2 < 1e-6);
+      const double s = amount * shortest[v] / std::sqrt(norm2);
+      for (int a = 0; a < sd; ++a) x[a] = old[a] + s * dir[a];
+      bool ok = true;
+      if (keep_valid)
+        for (std::int64_t k = adj.offsets[v]; k < adj.offsets[v + 1] && ok; ++k)
+          ok = cell_valid(*mesh, adj.items[k]);
+      if (ok) {
+        ++*moved;
+        break;
+      }
+      for (int a = 0; a < sd; ++a) x[a] = old[a];
+    }
+  }
+}
+
+// ---- tasks -------------------------------------------------------------------------------------
+
+struct Context {
+  std::string path;
+  tmop::Mesh mesh;  // as read (reoriented when it uses the opposite convention)
+  tmop::Mesh reference;
+  bool has_reference = false;
+  int threads = 0;
+};
+
+void add_recipe(const tmop::RecipeResult& r, const tmop::Status& s, Json* j) {
+  int iterations = 0, solves = 0;
+  for (const tmop::StageResult& st : r.stages) {
+    iterations += st.iterations;
+    solves += st.solves;
+  }
+  std::string stages = "[";
+  for (std::size_t i = 0; i < r.stages.size(); ++i) {
+    const tmop::StageResult& st = r.stages[i];
+    Json o;
+    o.str("name", st.name)
+        .str("linear_solver", st.linear_solver)
+        .integer("iterations", st.iterations)
+        .integer("solves", st.solves)
+        .num("seconds", st.seconds)
+        .num("seconds_per_iteration", st.iterations ? st.seconds / st.iterations : 0)
+        .num("initial_objective", st.initial_objective)
+        .num("final_objective", st.final_objective)
+        .integer("sample_points", st.num_sample_points)
+        .integer("free_vertices", st.num_free_vertices)
+        .str("termination", st.termination);
+    stages += (i ? ", " : "") + o.text();
+  }
+  j->boolean("ok", s.ok())
+      .str("message", s.message())
+      .integer("iterations", iterations)
+      .integer("solves", solves)
+      .num("final_objective", r.stages.empty() ? 0 : r.stages.back().final_objective)
+      .num("min_quality_before", r.before.min_quality)
+      .num("min_quality_after", r.after.min_quality)
+      .integer("inverted_before", r.before.inverted)
+      .integer("inverted_after", r.after.inverted)
+      .raw("stages", stages + "]");
+}
+
+tmop::SolverOptions solver_options(const Context& ctx) {
+  tmop::SolverOptions so;
+  so.max_iterations = FLAGS_max_iterations;
+  so.max_seconds = FLAGS_max_seconds;
+  so.threads = ctx.threads;
+  so.verbose = FLAGS_verbose;
+  return so;
+}
+
+tmop::TargetSpec target_spec(const Context& ctx) {
+  tmop::TargetSpec t;
+  if (ctx.has_reference) {
+    t.type = tmop::TargetType::kReference;
+    t.reference = &ctx.reference;
+  }
+  return t;
+}
+
+int run_recipe(const Context& ctx, Json* j) {
+  Timing timing;
+  tmop::RecipeResult result;
+  tmop::Status s;
+  for (int k = 0; k < FLAGS_repeat; ++k) {
+    tmop::Mesh mesh = ctx.mesh;
+    tmop::ShapeOptions shape;
+    shape.metric = FLAGS_metric;
+    shape.target = target_spec(ctx);
+    shape.solver = solver_options(ctx);
+    timing.start();
+    if (FLAGS_task == "shape") {
+      s = tmop::improve_shape(&mesh, shape, &result);
+    } else {
+      tmop::UntangleOptions u;
+      u.target = shape.target;
+      u.solver = shape.solver;
+      u.improve_shape_after = FLAGS_then_shape;
+      u.shape = shape;
+      s = tmop::untangle(&mesh, u, &result);
+    }
+    timing.stop();
+  }
+  timing.add_to(j);
+  add_recipe(result, s, j);
+  return s.ok() ? 0 : 1;
+}
+
+int run_read(const Context& ctx, Json* j) {
+  Timing timing;
+  for (int k = 0; k < FLAGS_repeat; ++k) {
+    tmop::Mesh mesh;
+    timing.start();
+    tmop::Status s = tmop::read_mesh(ctx.path, &mesh);
+    timing.stop();
+    if (!s.ok()) return fail(2, s.message());
+  }
+  timing.add_to(j);
+  return 0;
+}
+
+int run_quality(const Context& ctx, Json* j) {
+  Timing measure, full;
+  tmop::IterationRecord rec;
+  std::int64_t inverted = 0;
+  for (int k = 0; k < FLAGS_repeat; ++k) {
+    measure.start();
+    rec = tmop::measure_mesh(ctx.mesh, tmop::SampleRule::kDefault);
+    measure.stop();
+    full.start();
+    const tmop::QualityReport report = tmop::compute_quality(ctx.mesh);
+    full.stop();
+    inverted = report.inverted_cells;
+  }
+  full.add_to(j);
+  Json m;
+  measure.add_to(&m);
+  j->obj("measure_mesh", m)
+      .num("min_quality_before", rec.min_quality)
+      .integer("inverted_before", rec.inverted)
+      .integer("inverted_cells_report", inverted);
+  return 0;
+}
+
+std::shared_ptr<const tmop::Metric> bench_metric(int d) {
+  std::string error;
+  auto m = tmop::recipe_metric(FLAGS_metric, d, 1.0, &error);
+  if (!m) std::fprintf(stderr, "tmop_bench: %s\n", error.c_str());
+  return m;
+}
+
+// The floor: K passes, one thread.
+int run_floor(const Context& ctx, const PointTable& pt, const tmop::Metric& metric, Json* j,
+              double* seconds) {
+  Timing timing;
+  std::vector<double> gradient;
+  double cost = 0;
+  for (int k = 0; k < std::max(FLAGS_repeat, 3); ++k) {
+    timing.start();
+    if (!floor_pass(ctx.mesh, pt, metric, &gradient, &cost))
+      return fail(1, "the metric failed at a sample point (inverted mesh and barrier metric)");
+    timing.stop();
+  }
+  double gmax = 0;
+  for (double g : gradient) gmax = std::max(gmax, std::abs(g));
+  *seconds = median(timing.wall);
+  timing.add_to(j);
+  j->integer("sample_points", static_cast<long long>(pt.cell.size()))
+      .num("points_per_second", pt.cell.size() / std::max(1e-12, *seconds))
+      .num("cost", cost)
+      .num("gradient_max_norm", gmax);
+  return 0;
+}
+
+int run_evaluate(const Context& ctx, Json* j) {
+  tmop::Mesh mesh = ctx.mesh;
+  const int d = mesh.dim();
+  auto metric = bench_metric(d);
+  if (!metric) return 2;
+  const std::vector<char> fixed = tmop::boundary_vertex_mask(mesh);
+  PointTable pt;
+  auto t0 = Clock::now();
+  tmop::Status s = build_points(mesh, target_spec(ctx), fixed, &pt);
+  if (!s.ok()) return fail(2, s.message());
+  const double targets_seconds = seconds_since(t0);
+
+  // Problem construction, as optimize_stage does it.
+  t0 = Clock::now();
+  double c0 = cpu_seconds();
+  ceres::Problem::Options popts;
+  popts.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  popts.enable_fast_removal = false;
+  popts.disable_all_safety_checks = true;
+  ceres::Problem problem(popts);
+  std::deque<tmop::SamplePointCost> costs;
+  std::vector<double*> blocks;
+  std::vector<char> in_problem(mesh.num_vertices(), 0);
+  for (std::size_t p = 0; p < pt.cell.size(); ++p) {
+    const int c = pt.cell[p], n = mesh.cell_size(c);
+    tmop::SamplePointTerm term;
+    term.metric = metric.get();
+    term.G = pt.G.data() + pt.offset[p];
+    term.sqrt_weight = pt.weight[p];
+    costs.emplace_back(n, d, 1, &term);
+    blocks.clear();
+    for (int i = 0; i < n; ++i) {
+      blocks.push_back(mesh.vertex(mesh.cell(c)[i]));
+      in_problem[mesh.cell(c)[i]] = 1;
+    }
+    problem.AddResidualBlock(&costs.back(), nullptr, blocks);
+  }
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    if (in_problem[v] && fixed[v]) problem.SetParameterBlockConstant(mesh.vertex(v));
+  const double construct_wall = seconds_since(t0), construct_cpu = cpu_seconds() - c0;
+
+  ceres::Problem::EvaluateOptions eopts;
+  eopts.num_threads = ctx.threads > 0 ? ctx.threads : std::thread::hardware_concurrency();
+  Timing timing;
+  double cost = 0;
+  std::vector<double> gradient;
+  for (int k = 0; k < std::max(FLAGS_repeat, 3); ++k) {
+    timing.start();
+    if (!problem.Evaluate(eopts, &cost, nullptr, &gradient, nullptr))
+      return fail(1, "Ceres evaluation failed (inverted mesh and barrier metric?)");
+    timing.stop();
+  }
+  const double eval_seconds = median(timing.wall);
+  timing.add_to(j);
+  j->integer("sample_points", static_cast<long long>(pt.cell.size()))
+      .integer("evaluate_threads", eopts.num_threads)
+      .num("points_per_second", pt.cell.size() / std::max(1e-12, eval_seconds))
+      .num("cost", cost)
+      .num("targets_seconds", targets_seconds)
+      .num("problem_construction_seconds", construct_wall)
+      .num("problem_construction_cpu_seconds", construct_cpu);
+
+  Json floor;
+  double floor_seconds = 0;
+  if (int rc = run_floor(ctx, pt, *metric, &floor, &floor_seconds)) return rc;
+  j->obj("floor", floor).num("ratio_to_floor", eval_seconds / std::max(1e-12, floor_seconds));
+
+  // One Ceres iteration inside optimize_stage: (max_iterations = 1) - (max_iterations = 0).
+  // Both include the stage's set-up (targets, problem, measures) and Ceres's preprocessing;
+  // the difference is one trust-region step: linear solve, evaluations, callback.
+  double stage_seconds[2] = {0, 0};
+  tmop::StageResult sr[2];
+  for (int iters = 0; iters <= 1; ++iters) {
+    tmop::StageSpec spec;
+    spec.name = "evaluate";
+    tmop::TermSpec term;
+    term.metric = metric;
+    term.target = target_spec(ctx);
+    spec.terms.push_back(term);
+    spec.solver = solver_options(ctx);
+    spec.solver.max_iterations = iters;
+    std::vector<double> times;
+    for (int k = 0; k < std::max(FLAGS_repeat, 3); ++k) {
+      tmop::Mesh m = ctx.mesh;
+      t0 = Clock::now();
+      s = tmop::optimize_stage(&m, spec, &sr[iters]);
+      times.push_back(seconds_since(t0));
+      if (!s.ok()) return fail(1, s.message());
+    }
+    stage_seconds[iters] = median(times);
+  }
+  j->num("stage_seconds_0_iterations", stage_seconds[0])
+      .num("stage_seconds_1_iteration", stage_seconds[1])
+      .num("ceres_iteration_seconds", stage_seconds[1] - stage_seconds[0])
+      .str("linear_solver", sr[1].linear_solver);
+  return 0;
+}
+
+int run_perturb(Context* ctx, Json* j) {
+  if (FLAGS_output.empty()) return fail(2, "--task=perturb needs --output");
+  const tmop::IterationRecord before = tmop::measure_mesh(ctx->mesh, tmop::SampleRule::kDefault);
+  int moved = 0;
+  Timing timing;
+  timing.start();
+  perturb(&ctx->mesh, FLAGS_amount, static_cast<std::uint64_t>(FLAGS_seed), FLAGS_keep_valid,
+          &moved);
+  timing.stop();
+  const tmop::IterationRecord after = tmop::measure_mesh(ctx->mesh, tmop::SampleRule::kDefault);
+  tmop::WriteOptions w;
+  w.binary = true;
+  tmop::Status s = tmop::write_mesh(FLAGS_output, ctx->mesh, w);
+  if (!s.ok()) return fail(2, s.message());
+  timing.add_to(j);
+  const int elements = ctx->mesh.num_elements();
+  j->str("output", FLAGS_output)
+      .num("amount", FLAGS_amount)
+      .integer("seed", FLAGS_seed)
+      .boolean("keep_valid", FLAGS_keep_valid)
+      .integer("moved_vertices", moved)
+      .num("min_quality_before", before.min_quality)
+      .num("min_quality_after", after.min_quality)
+      .integer("inverted_before", before.inverted)
+      .integer("inverted_after", after.inverted)
+      .num("inverted_fraction", elements ? static_cast<double>(after.inverted) / elements : 0);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  gflags::SetUsageMessage(
+      "reproducible speed/scale runs with a JSON record\n"
+      "  tmop_bench --input=MESH --task=shape|untangle|read|quality|evaluate|floor|perturb");
+  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  FLAGS_minloglevel = FLAGS_verbose ? 1 : 3;
+  google::InitGoogleLogging(argv[0]);
+  if (FLAGS_input.empty()) return fail(2, "--input is required (see --help)");
+  const std::string task = FLAGS_task;
+  if (task != "read" && task != "quality" && task != "shape" && task != "untangle" &&
+      task != "evaluate" && task != "floor" && task != "perturb")
+    return fail(2, "unknown --task '" + task + "'");
+  if (FLAGS_repeat < 1) return fail(2, "--repeat must be >= 1");
+
+  Json j;
+  j.str("tool", "tmop_bench")
+      .str("task", task)
+      .str("date", utc_now())
+      .str("commit", git_commit())
+      .obj("machine", machine_json())
+      .num("load_average_1min", load_average());
+
+  Context ctx;
+  ctx.path = FLAGS_input;
+  ctx.threads = FLAGS_threads;
+  const auto read_start = Clock::now();
+  tmop::Status s = tmop::read_mesh(FLAGS_input, &ctx.mesh);
+  if (!s.ok()) return fail(2, s.message());
+  const double read_seconds = seconds_since(read_start);
+  s = tmop::validate_mesh(ctx.mesh);
+  if (!s.ok()) return fail(2, FLAGS_input + ": " + s.message());
+  if (!FLAGS_reference.empty()) {
+    s = tmop::read_mesh(FLAGS_reference, &ctx.reference);
+    if (!s.ok()) return fail(2, s.message());
+    ctx.has_reference = true;
+  }
+  // As tmop_optimize: a mesh in the opposite orientation convention is optimized reoriented.
+  if (task != "perturb" && task != "read" &&
+      tmop::check_orientation(ctx.mesh).opposite_convention()) {
+    tmop::reorient(&ctx.mesh);
+    if (ctx.has_reference) tmop::reorient(&ctx.reference);
+    j.boolean("reoriented", true);
+  }
+  j.obj("mesh", mesh_json(ctx.mesh, FLAGS_input))
+      .num("read_seconds", read_seconds)
+      .integer("threads", FLAGS_threads > 0 ? FLAGS_threads : std::thread::hardware_concurrency())
+      .integer("repeat", FLAGS_repeat);
+
+  int rc = 0;
+  if (task == "read") {
+    rc = run_read(ctx, &j);
+  } else if (task == "quality") {
+    rc = run_quality(ctx, &j);
+  } else if (task == "shape" || task == "untangle") {
+    rc = run_recipe(ctx, &j);
+  } else if (task == "evaluate") {
+    rc = run_evaluate(ctx, &j);
+  } else if (task == "floor") {
+    auto metric = bench_metric(ctx.mesh.dim());
+    if (!metric) return 2;
+    PointTable pt;
+    s = build_points(ctx.mesh, target_spec(ctx), tmop::boundary_vertex_mask(ctx.mesh), &pt);
+    if (!s.ok()) return fail(2, s.message());
+    double seconds = 0;
+    rc = run_floor(ctx, pt, *metric, &j, &seconds);
+  } else {
+    rc = run_perturb(&ctx, &j);
+  }
+  if (rc == 2) return rc;
+  j.num("peak_rss_mb", peak_rss_mb());
+  const std::string text = j.text();
+  std::printf("%s\n", text.c_str());
+  if (!FLAGS_json.empty()) {
+    std::ofstream out(FLAGS_json);
+    out << text << "\n";
+    if (!out.good()) return fail(2, FLAGS_json + ": cannot write");
+  }
+  return rc;
+}
