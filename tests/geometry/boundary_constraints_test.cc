@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <set>
 
@@ -222,6 +223,20 @@ TEST(BoundaryConstraints, BadGeometryIsAStatus) {
     EXPECT_EQ(bc, nullptr);
     EXPECT_EQ(s.message().find('\n'), std::string::npos);
   }
+  // A reference surface of slivers only.
+  const std::string slivers = std::string(TMOP_BINARY_DIR) + "/geometry_slivers.stl";
+  {
+    std::ofstream f(slivers);
+    f << "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 2 0 0\n"
+         "endloop\nendfacet\nendsolid s\n";
+  }
+  BoundaryOptions sliver_options;
+  sliver_options.geometry = slivers;
+  std::unique_ptr<BoundaryConstraints> none;
+  const Status sliver_status = BoundaryConstraints::Build(mesh, sliver_options, &none);
+  EXPECT_FALSE(sliver_status.ok());
+  EXPECT_NE(sliver_status.message().find("positive area"), std::string::npos)
+      << sliver_status.message();
   const Mesh square = load_geometry_mesh("square_hole.msh");
   BoundaryOptions options;
   options.geometry = "sphere:0,0,0,1";

@@ -112,6 +112,24 @@ TEST(TriangleSurfaceManifold, WalkAcrossAFoldKeepsLengthAndAngle) {
   EXPECT_NEAR(y[2], 0.35 * std::sin(M_PI / 3), 1e-12);
 }
 
+TEST(TriangleSurfaceManifold, MinusInvertsOneCrossingOfAFold) {
+  std::vector<double> v;
+  std::vector<std::int32_t> t;
+  add_folded_grid(20, 0.1, 1.0, M_PI / 3, &v, &t);
+  TriangleSurfaceManifold surface(v, t);
+  const double x[3] = {0.97, 1.05, 0};
+  double jac[6];
+  surface.PlusJacobian(x, jac);
+  const double step[2] = {0.05, 0.01};  // into the neighbouring triangle beyond the fold
+  const double d[2] = {jac[0] * step[0] + jac[2] * step[1], jac[1] * step[0] + jac[3] * step[1]};
+  double y[3], back[2];
+  ASSERT_TRUE(surface.Plus(x, d, y));
+  EXPECT_NEAR(y[2], 0.02 * std::sin(M_PI / 3), 1e-14);
+  ASSERT_TRUE(surface.Minus(y, x, back));
+  EXPECT_NEAR(back[0], d[0], 1e-14);
+  EXPECT_NEAR(back[1], d[1], 1e-14);
+}
+
 TEST(TriangleSurfaceManifold, InvariantsInsideFaces) {
   std::vector<double> v;
   std::vector<std::int32_t> t;

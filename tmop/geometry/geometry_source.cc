@@ -1,5 +1,6 @@
 #include "tmop/geometry/geometry_source.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -74,6 +75,22 @@ Status load_geometry_source(const std::string& spec, GeometrySource* out) {
     return Status::Failure(s.message() +
                            " (geometry: sphere:cx,cy,cz,r | plane:p,n | cylinder:p,d,r | FILE)");
   }
+  // TriangleSurfaceManifold CHECKs for a usable triangle; a file of slivers is the user's
+  // doing, so it is reported here instead. Same relative area test as the manifold's.
+  bool usable = false;
+  for (std::size_t t = 0; t + 2 < triangles.size() && !usable; t += 3) {
+    const double* a = &vertices[3 * triangles[t]];
+    const double* b = &vertices[3 * triangles[t + 1]];
+    const double* c = &vertices[3 * triangles[t + 2]];
+    const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double e3[3] = {c[0] - b[0], c[1] - b[1], c[2] - b[2]};
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                         e1[0] * e2[1] - e1[1] * e2[0]};
+    const double h = std::max({norm3(e1), norm3(e2), norm3(e3)});
+    usable = norm3(n) > 1e-14 * h * h;
+  }
+  if (!usable) return Status::Failure(spec + ": the surface has no triangle with positive area");
   out->kind = GeometrySourceKind::kSurfaceFile;
   out->description = spec;
   out->surface = std::make_unique<TriangleSurfaceManifold>(std::move(vertices), triangles);
