@@ -224,6 +224,29 @@ TEST(BoundaryClassification, FeatureAngleDecidesCorners2D) {
   EXPECT_EQ(c.curves[0].vertices.size(), 6u);
 }
 
+TEST(BoundaryClassification, BoundaryTagsGiveTheCadFeaturesAtAnyAngle) {
+  // With a 179 degree feature angle only the tagged faces / lines (gmsh entities) split.
+  ClassifyOptions options;
+  options.feature_angle_deg = 179;
+  options.boundary_tags = true;
+  BoundaryClassification c;
+  const Mesh box = load_geometry_mesh("box.msh");
+  ASSERT_TRUE(classify_boundary(box, options, &c).ok());
+  expect_box(box, c);
+  const Mesh part = load_geometry_mesh("part.msh");
+  ASSERT_TRUE(classify_boundary(part, options, &c).ok());
+  expect_part(part, c);
+  const Mesh square = load_geometry_mesh("square_hole.msh");
+  ASSERT_TRUE(classify_boundary(square, options, &c).ok());
+  EXPECT_EQ(c.count(VertexKind::kFixed), 4);
+  EXPECT_EQ(c.curves.size(), 5u);
+  // Without the tags nothing is sharp enough: the box is one patch without curves.
+  options.boundary_tags = false;
+  ASSERT_TRUE(classify_boundary(box, options, &c).ok());
+  EXPECT_EQ(c.patches.size(), 1u);
+  EXPECT_EQ(c.curves.size(), 0u);
+}
+
 TEST(BoundaryClassification, RejectsBadInput) {
   Mesh empty;
   BoundaryClassification c;

@@ -3,7 +3,10 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <numeric>
+#include <utility>
 
 #include "tmop/geometry/vec3.h"
 #include "tmop/mesh/topology.h"
@@ -14,6 +17,7 @@ namespace {
 // A boundary facet of a volume mesh or a cell of a surface mesh: the pieces patches are made
 // of. mid[j] is the node in the middle of the edge (corners[j], corners[j + 1]), -1 if linear.
 struct Face {
+  std::int32_t tag = 0;  // the tagged lower-dimensional cell on this facet (0: none)
   int num_corners = 0;
   std::int32_t corners[4] = {-1, -1, -1, -1};
   std::int32_t mid[4] = {-1, -1, -1, -1};
@@ -24,7 +28,42 @@ struct Face {
 
 // An edge of the feature graph (boundary edge of a planar mesh, feature edge otherwise).
 struct FeatureEdge {
-  std::int32_t a, b, mid, region;
+  std::int32_t a, b, mid, region, tag;
+};
+
+// Tags of the lower-dimensional cells of dimension `dim`, by sorted corner list, for lookups
+// of facets. Entity tag first (the CAD entity), region tag when there is none.
+class FacetTags {
+ public:
+  FacetTags(const Mesh& mesh, int dim) {
+    for (int c = 0; c < mesh.num_cells(); ++c) {
+      const CellInfo& info = cell_info(mesh.cell_type(c));
+      if (info.dim != dim) continue;
+      std::int32_t tag = c < static_cast<int>(mesh.cell_entity.size()) ? mesh.cell_entity[c] : 0;
+      if (tag == 0 && c < static_cast<int>(mesh.cell_region.size())) tag = mesh.cell_region[c];
+      if (tag != 0) entries_.push_back({key(mesh.cell(c), info.num_corners), tag});
+    }
+    std::sort(entries_.begin(), entries_.end());
+  }
+  std::int32_t find(const std::int32_t* corners, int n) const {
+    const Key k = key(corners, n);
+    auto it = std::lower_bound(entries_.begin(), entries_.end(),
+                               std::make_pair(k, std::numeric_limits<std::int32_t>::min()));
+    return it != entries_.end() && it->first == k ? it->second : 0;
+  }
+
+ private:
+  using Key = std::array<std::int32_t, 4>;
+  static Key key(const std::int32_t* corners, int n) {
+    Key k = {-1, -1, -1, -1};
+    std::copy(corners, corners + n, k.begin());
+    // Insertion sort of at most 4 entries (std::sort trips GCC 12's -Warray-bounds here).
+    for (int i = 1; i < n; ++i) {
+      for (int j = i; j > 0 && k[j - 1] > k[j]; --j) std::swap(k[j - 1], k[j]);
+    }
+    return k;
+  }
+  std::vector<std::pair<Key, std::int32_t>> entries_;
 };
 
 std::int32_t region_of(const Mesh& mesh, int cell) {
@@ -208,9 +247,12 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
   // 1. Faces (volume and surface meshes) or boundary edges (planar meshes).
   std::vector<Face> faces;
   std::vector<FeatureEdge> features;
+  std::unique_ptr<FacetTags> tags;
+  if (options.boundary_tags) tags = std::make_unique<FacetTags>(mesh, dim - 1);
   if (dim == 3) {
     for (const BoundaryFacet& bf : boundary_facets(mesh)) {
       Face f;
+      if (tags) f.tag = tags->find(bf.corners, bf.num_corners);
       f.num_corners = bf.num_corners;
       std::copy(bf.corners, bf.corners + 4, f.corners);
       facet_extra_nodes(mesh.cell_type(bf.cell), bf.local, mesh.cell(bf.cell), f.mid, &f.centre);
@@ -236,7 +278,8 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
     for (const BoundaryFacet& bf : boundary_facets(mesh)) {
       std::int32_t mid[4], centre;
       facet_extra_nodes(mesh.cell_type(bf.cell), bf.local, mesh.cell(bf.cell), mid, &centre);
-      features.push_back({bf.corners[0], bf.corners[1], mid[0], region_of(mesh, bf.cell)});
+      const std::int32_t tag = tags ? tags->find(bf.corners, 2) : 0;
+      features.push_back({bf.corners[0], bf.corners[1], mid[0], region_of(mesh, bf.cell), tag});
     }
   }
   for (Face& f : faces) face_normal(mesh, &f);
@@ -276,13 +319,14 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
         // surface meshes may not be consistent, so compare the normals up to that flip.
         const bool same_direction = f.corners[records[i].j] == g.corners[records[i + 1].j];
         const double c = vec3::dot(f.normal, g.normal) * (same_direction ? -1 : 1);
-        feature = c < cos_feature || (options.region_interfaces && f.region != g.region);
+        feature = c < cos_feature || (options.region_interfaces && f.region != g.region) ||
+                  (f.tag != 0 && g.tag != 0 && f.tag != g.tag);
       }
       if (feature) {
         const EdgeRecord& r = records[i];
         const Face& f = faces[r.face];
         features.push_back(
-            {f.corners[r.j], f.corners[(r.j + 1) % f.num_corners], f.mid[r.j], f.region});
+            {f.corners[r.j], f.corners[(r.j + 1) % f.num_corners], f.mid[r.j], f.region, f.tag});
       } else {
         const int a = find_root(&parent, records[i].face);
         const int b = find_root(&parent, records[i + 1].face);
@@ -331,7 +375,8 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
       vec3::normalize(in);
       vec3::normalize(outv);
       is_corner = vec3::dot(in, outv) < cos_feature ||
-                  (dim == 2 && space == 2 && options.region_interfaces && e1.region != e2.region);
+                  (dim == 2 && space == 2 && options.region_interfaces && e1.region != e2.region) ||
+                  (dim == 2 && space == 2 && e1.tag != 0 && e2.tag != 0 && e1.tag != e2.tag);
     }
     corner[v] = is_corner;
     if (is_corner) out->kind[v] = VertexKind::kFixed;

@@ -5,7 +5,8 @@
 //     edges - edges whose two boundary facets meet at a dihedral angle above feature_angle_deg
 //     (angle between the outward normals), edges of the boundary that are non-manifold (not
 //     exactly two facets), and, optionally, edges where the facets' owning cells carry different
-//     cell_region tags (region interfaces reaching the boundary). Feature edges form curves;
+//     cell_region tags (region interfaces reaching the boundary) and, optionally, where the
+//     file's tagged boundary faces change tag. Feature edges form curves;
 //     their vertices with a number of feature edges other than 2, or where the curve turns by
 //     more than feature_angle_deg, are corners.
 //   surface mesh (2D cells in 3D): the cells themselves play the boundary facets' role; edges of
@@ -63,6 +64,11 @@ struct ClassifyOptions {
   double feature_angle_deg = 30;
   // Also split at edges where the boundary facets' cells have different cell_region tags.
   bool region_interfaces = true;
+  // Also split where the boundary's own tagged cells (the lower-dimensional cells a .msh / .mesh
+  // file carries: faces of volume meshes, lines of planar meshes) change tag: their entity tag,
+  // or their region tag when the entity tag is 0. For meshes made from CAD this reproduces the
+  // CAD's surfaces and curves whatever the angles. Facets without a tagged cell never split.
+  bool boundary_tags = false;
 };
 
 struct BoundaryClassification {

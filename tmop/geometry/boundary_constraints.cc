@@ -42,6 +42,7 @@ Status BoundaryConstraints::Build(const Mesh& mesh, const BoundaryOptions& optio
   std::unique_ptr<BoundaryConstraints> bc(new BoundaryConstraints());
   ClassifyOptions classify;
   classify.feature_angle_deg = options.feature_angle_deg;
+  classify.boundary_tags = options.boundary_tags;
   Status s = classify_boundary(mesh, classify, &bc->classification_);
   if (!s.ok()) return s;
   GeometrySource source;

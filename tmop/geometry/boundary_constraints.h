@@ -40,6 +40,9 @@ struct BoundaryOptions {
   bool slide = true;
   // Dihedral / turning angle above which an edge is a feature and a vertex a corner, degrees.
   double feature_angle_deg = 30;
+  // Also split patches / curves where the file's tagged boundary cells change tag
+  // (ClassifyOptions::boundary_tags): the CAD's own surfaces and curves for gmsh meshes.
+  bool boundary_tags = false;
   // "" (own boundary), "sphere:cx,cy,cz,r", "plane:px,py,pz,nx,ny,nz",
   // "cylinder:px,py,pz,dx,dy,dz,r" or a surface file (.stl .obj .off .ply): geometry_source.h.
   std::string geometry;
