@@ -81,6 +81,29 @@ TEST(BoundaryClassification, BoxTet10MidNodesTakeTheirEdgesKind) {
   for (const BoundaryCurve& curve : c.curves) EXPECT_EQ(curve.vertices.size() % 2, 1u);
 }
 
+TEST(BoundaryClassification, BoxHex8AndHex27) {
+  for (const char* name : {"box_hex.msh", "box_hex27.msh"}) {
+    const Mesh mesh = load_geometry_mesh(name);
+    BoundaryClassification c;
+    ASSERT_TRUE(classify_boundary(mesh, {}, &c).ok()) << name;
+    expect_box(mesh, c);
+  }
+  // 5 x 5 x 5 grid points, of which 3^3 inside: 8 corners, 12 x 3 on edges, 6 x 9 on faces.
+  const Mesh hex = load_geometry_mesh("box_hex.msh");
+  BoundaryClassification c;
+  ASSERT_TRUE(classify_boundary(hex, {}, &c).ok());
+  EXPECT_EQ(c.count(VertexKind::kCurve), 36);
+  EXPECT_EQ(c.count(VertexKind::kSurface), 54);
+  EXPECT_EQ(c.count(VertexKind::kInterior), 27);
+  // hex27: 9 x 9 x 9 nodes; each patch splits 16 quad9 faces into 128 triangles.
+  const Mesh hex27 = load_geometry_mesh("box_hex27.msh");
+  ASSERT_TRUE(classify_boundary(hex27, {}, &c).ok());
+  EXPECT_EQ(c.count(VertexKind::kCurve), 12 * 7);
+  EXPECT_EQ(c.count(VertexKind::kSurface), 6 * 49);
+  EXPECT_EQ(c.count(VertexKind::kInterior), 7 * 7 * 7);
+  for (const BoundaryPatch& p : c.patches) EXPECT_EQ(p.triangles.size(), 128u);
+}
+
 TEST(BoundaryClassification, BoxSurfaceMesh) {
   Mesh mesh = load_geometry_mesh("box_surface.msh");
   BoundaryClassification c;
