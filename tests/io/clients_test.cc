@@ -252,6 +252,48 @@ TEST(TmopWrites, MeshioReadsEveryFormat) {
   compare_with_reader("meshio", files, dumps);
 }
 
+// The OpenMesh-backed surface formats, read back by meshio (an independent OBJ / OFF / PLY
+// reader): same points in the same order, same faces.
+TEST(TmopWrites, MeshioReadsSurfaceFormats) {
+  SKIP_UNLESS(test::have_python_module("meshio"), "python3-meshio");
+  const std::string dir = test::temp_dir();
+  auto strip = [](bool quads) {
+    Mesh mesh;
+    mesh.space_dim = 3;
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 4; ++i) {
+        // float32-exact: OpenMesh reads and writes coordinates as float (docs/formats.md).
+        const double x[3] = {0.5 * i + 0.0625, 0.25 * j, 0.125 * (i * j % 3)};
+        mesh.add_vertex(x);
+      }
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const std::int32_t a = j * 4 + i;
+        if (quads && (i + j) % 2 == 0) {
+          const std::int32_t q[4] = {a, a + 1, a + 5, a + 4};
+          mesh.add_cell(CellType::kQuad4, q);
+        } else {
+          const std::int32_t t1[3] = {a, a + 1, a + 5}, t2[3] = {a, a + 5, a + 4};
+          mesh.add_cell(CellType::kTri3, t1);
+          mesh.add_cell(CellType::kTri3, t2);
+        }
+      }
+    return mesh;
+  };
+  std::vector<std::string> files;
+  std::vector<Dump> dumps;
+  // meshio's OFF reader takes triangles only.
+  for (const char* name : {"s.obj", "s.off", "s.ply"}) {
+    const Mesh mesh = strip(std::string(name) != "s.off");
+    const std::string path = dir + "/" + name;
+    const Status s = write_mesh(path, mesh);
+    ASSERT_TRUE(s.ok()) << s.message();
+    files.push_back(path);
+    dumps.push_back(test::dump_of(mesh));
+  }
+  compare_with_reader("meshio", files, dumps);
+}
+
 TEST(MeshioWrites, TmopReadsEveryFormat) {
   SKIP_UNLESS(test::have_python_module("meshio"), "python3-meshio");
   const std::string dir = test::temp_dir();

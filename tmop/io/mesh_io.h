@@ -6,7 +6,8 @@
 //   .vtu                  VTK XML UnstructuredGrid (read: ascii, base64 inline, raw appended,
 //                         zlib-compressed; write: ascii or base64 inline)
 //   .mesh                 Medit / INRIA ASCII
-//   .obj .off .ply .stl   surface formats through OpenMesh (tri3 / quad4 cells in 3D)
+//   .obj .off .ply .stl   surface formats through OpenMesh (tri3 / quad4 cells; coordinates
+//                         pass through float32 in OpenMesh)
 //
 // read_mesh: fills *mesh (cleared first) with Gmsh node order inside (io/ converts). space_dim is
 //   2 when every z coordinate is exactly 0 and no cell has dimension 3; otherwise 3 (surface

@@ -2,14 +2,15 @@
 // Surface formats .obj .off .ply .stl through OpenMesh 9 (shared library, so its readers and
 // writers register themselves). Read: OpenMesh::IO::read_mesh into a PolyMesh with double
 // coordinates; faces with 3 / 4 vertices become tri3 / quad4 cells, anything else is an error.
-// STL stores triangles only (OpenMesh merges equal corner points into shared vertices, binary
-// STL holds float32 coordinates). Write: the dimension-2 linear cells (tri3, quad4) become faces;
-// lower-dimensional cells (boundary lines, points) are dropped because these formats cannot
-// hold them; 3D or quadratic cells are an error. Before handing a file to OpenMesh, the declared
-// counts of OFF and PLY headers and the size of a binary STL are checked against the file size,
-// because OpenMesh trusts them.
-// GCC 12 reports a false -Wmaybe-uninitialized inside OpenMesh's VectorT<double> copies when its
-// templates are instantiated here; the warning is about OpenMesh's code, not ours.
+// STL stores triangles only (OpenMesh merges equal corner points into shared vertices).
+// Precision: OpenMesh 9 passes coordinates through float32 on read and write in all of these
+// formats, whatever the point type, so they keep ~7 digits (docs/formats.md). Write: the
+// dimension-2 linear cells (tri3, quad4) become faces; lower-dimensional cells (boundary lines,
+// points) are dropped because these formats cannot hold them; 3D or quadratic cells are an error.
+// Before handing a file to OpenMesh, the declared counts of OFF and PLY headers and the size of a
+// binary STL are checked against the file size, because OpenMesh trusts them. GCC 12 reports a
+// false -Wmaybe-uninitialized inside OpenMesh's VectorT<double> copies when its templates are
+// instantiated here; the warning is about OpenMesh's code, not ours.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
