@@ -1,0 +1,57 @@
+#include "tmop/recipes/equal_edge.h"
+
+#include <chrono>
+
+#include "tmop/recipes/improve_shape.h"
+
+namespace tmop {
+
+int count_sample_points(const Mesh& mesh, SampleRule rule) {
+  const int d = mesh.dim();
+  int n = 0;
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    if (mesh.is_element(c, d)) n += static_cast<int>(sample_points(mesh.cell_type(c), rule).size());
+  return n;
+}
+
+Status equal_edge(Mesh* mesh, const EqualEdgeOptions& options, RecipeResult* result) {
+  const auto start = std::chrono::steady_clock::now();
+  *result = RecipeResult();
+  result->recipe = "equal_edge";
+  const int d = mesh->dim();
+  if (d < 2) return Status::Failure("the mesh has no 2D or 3D elements");
+  if (!(options.shape_guard_weight >= 0))
+    return Status::Failure("equal_edge: shape_guard_weight must be >= 0");
+  result->before = measure_mesh(*mesh, options.rule);
+
+  StageSpec stage;
+  stage.name = "equal_edge";
+  stage.rule = options.rule;
+  stage.fixed = options.fixed;
+  stage.solver = options.solver;
+  std::string error;
+  TermSpec size_shape;
+  size_shape.metric = recipe_metric(options.metric, d, 1.0, &error);
+  if (!size_shape.metric) return Status::Failure(error);
+  size_shape.target.type = TargetType::kMeanEdgeLength;
+  stage.terms.push_back(size_shape);
+  if (options.shape_guard_weight > 0) {
+    TermSpec guard;
+    guard.metric = recipe_metric("shape_barrier", d, 1.0, &error);
+    if (!guard.metric) return Status::Failure(error);
+    // The shape metric is scale-invariant, so the target's size is irrelevant; the same
+    // lambda target keeps both terms on one set of matrices.
+    guard.target.type = TargetType::kMeanEdgeLength;
+    guard.weights.assign(count_sample_points(*mesh, options.rule), options.shape_guard_weight);
+    stage.terms.push_back(guard);
+  }
+  StageResult sr;
+  Status s = optimize_stage(mesh, stage, &sr);
+  if (!s.ok()) return s;
+  result->stages.push_back(sr);
+  result->after = measure_mesh(*mesh, options.rule);
+  result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Ok();
+}
+
+}  // namespace tmop
