@@ -2,7 +2,8 @@
 // Reading and writing meshes in the common formats; the format is chosen by the file extension.
 //
 //   .msh                  Gmsh 2.2 and 4.1, ASCII and binary (read both; write per options)
-//   .vtk                  VTK legacy UNSTRUCTURED_GRID, ASCII and binary (big-endian)
+//   .vtk                  VTK legacy UNSTRUCTURED_GRID (POLYDATA on read), ASCII and binary
+//                         (big-endian)
 //   .vtu                  VTK XML UnstructuredGrid (read: ascii, base64 inline, raw appended,
 //                         zlib-compressed; write: ascii or base64 inline)
 //   .mesh                 Medit / INRIA ASCII

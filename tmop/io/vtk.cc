@@ -1,12 +1,13 @@
 // tmop/io/vtk.cc
-// VTK legacy format, DATASET UNSTRUCTURED_GRID only, ASCII or BINARY (big-endian, as the format
-// requires). Reads both cell layouts: "CELLS n size" with [npts, ids...] rows (versions <= 4.2)
-// and "CELLS nOffsets nConn" + OFFSETS / CONNECTIVITY arrays (version 5.1, what meshio writes).
-// Attributes read: SCALARS (1-4 components, LOOKUP_TABLE line), VECTORS, NORMALS, TENSORS and
-// FIELD arrays, into Mesh::point_data / cell_data; tag arrays per vtk_common.h. Writes version
-// 3.0 with the old CELLS layout (readable by every VTK-based tool), Float64 points, tags as
-// SCALARS int arrays and fields as SCALARS / VECTORS / FIELD. Node order converted by
-// node_order.h. Array names with spaces are written with "%20", as VTK does.
+// VTK legacy format, DATASET UNSTRUCTURED_GRID (and, on read, POLYDATA with VERTICES / LINES /
+// POLYGONS of 1 / 2 / 3-4 points), ASCII or BINARY (big-endian, as the format requires). Reads both
+// cell layouts: "CELLS n size" with [npts, ids...] rows (versions <= 4.2) and "CELLS nOffsets
+// nConn" + OFFSETS / CONNECTIVITY arrays (version 5.1, what meshio writes). Attributes read:
+// SCALARS (1-4 components, LOOKUP_TABLE line), VECTORS, NORMALS, TENSORS and FIELD arrays, into
+// Mesh::point_data / cell_data; tag arrays per vtk_common.h. Writes version 3.0 with the old CELLS
+// layout (readable by every VTK-based tool), Float64 points, tags as SCALARS int arrays and fields
+// as SCALARS / VECTORS / FIELD. Node order converted by node_order.h. Array names with spaces are
+// written with "%20", as VTK does.
 #include <cmath>
 #include <limits>
 
@@ -78,11 +79,17 @@ class VtkReader {
     else
       s_.fail_at(fpos, "expected ASCII or BINARY");
     keyword("DATASET");
-    const std::size_t dpos = s_.pos();
-    if (s_.token() != "UNSTRUCTURED_GRID")
-      s_.fail_at(dpos, "only DATASET UNSTRUCTURED_GRID is supported");
+    const std::size_t dpos = (s_.skip_space(), s_.pos());
+    const std::string_view dataset = s_.token();
+    const bool poly = dataset == "POLYDATA";
+    if (dataset != "UNSTRUCTURED_GRID" && !poly)
+      s_.fail_at(dpos, "only DATASET UNSTRUCTURED_GRID and POLYDATA are supported");
     bool have_points = false, have_cells = false, have_types = false;
     std::vector<std::int64_t> offsets, conn, types;
+    if (poly) {  // cells come from VERTICES / LINES / POLYGONS sections, types from row lengths
+      offsets.assign(1, 0);
+      have_cells = have_types = true;
+    }
     std::string_view t;
     while (s_.try_token(&t)) {
       const std::size_t p = s_.pos() - t.size();
@@ -94,7 +101,10 @@ class VtkReader {
         read_reals(n * 3, type, &xyz, "point coordinate");
         mesh_->coords = std::move(xyz);
         have_points = true;
-      } else if (t == "CELLS") {
+      } else if (poly && (t == "VERTICES" || t == "LINES" || t == "POLYGONS")) {
+        cells_pos_ = types_pos_ = p;
+        read_poly_section(t, p, &offsets, &conn, &types);
+      } else if (t == "CELLS" && !poly) {
         cells_pos_ = p;
         read_cells(&offsets, &conn);
         have_cells = true;
@@ -253,6 +263,31 @@ class VtkReader {
       offsets->push_back(static_cast<std::int64_t>(conn->size()));
     }
     if (i != flat.size()) s_.fail("CELLS size " + std::to_string(b) + " does not match its rows");
+  }
+
+  // POLYDATA: each row's length decides its cell type; only the shapes tmop has are accepted
+  // (no poly-vertices, polylines, polygons beyond quads, triangle strips).
+  void read_poly_section(std::string_view name, std::size_t pos, std::vector<std::int64_t>* offsets,
+                         std::vector<std::int64_t>* conn, std::vector<std::int64_t>* types) {
+    std::vector<std::int64_t> off, cn;
+    read_cells(&off, &cn);
+    for (std::size_t c = 0; c + 1 < off.size(); ++c) {
+      const std::int64_t n = off[c + 1] - off[c];
+      int vtk = 0;
+      if (name == "VERTICES" && n == 1) vtk = 1;
+      if (name == "LINES" && n == 2) vtk = 3;
+      if (name == "POLYGONS" && n == 3) vtk = 5;
+      if (name == "POLYGONS" && n == 4) vtk = 9;
+      if (vtk == 0)
+        s_.fail_at(pos, std::string(name) + " row " + std::to_string(c) + " has " +
+                            std::to_string(n) +
+                            " points; tmop reads single vertices, 2-point lines, triangles and "
+                            "quadrilaterals");
+      types->push_back(vtk);
+      for (std::int64_t k = off[c]; k < off[c + 1]; ++k)
+        conn->push_back(cn[static_cast<std::size_t>(k)]);
+      offsets->push_back(static_cast<std::int64_t>(conn->size()));
+    }
   }
 
   void build_cells(const std::vector<std::int64_t>& offsets, const std::vector<std::int64_t>& conn,
