@@ -73,6 +73,10 @@ DEFINE_string(metric, "", "Metric (default: the recipe's shape metric).");
 DEFINE_int32(max_iterations, 200, "Maximum Ceres iterations per stage (shape, untangle).");
 DEFINE_double(max_seconds, 1e9, "Wall-clock cap per stage, seconds (shape, untangle).");
 DEFINE_bool(then_shape, false, "untangle: run the shape stage after untangling (recipe auto).");
+DEFINE_string(linear_solver, "auto", "auto, cholesky or cgnr (SolverOptions::LinearSolver).");
+DEFINE_string(solver, "lm", "lm or dogleg.");
+DEFINE_int32(cholesky_max_free_coordinates, 60000,
+             "auto picks sparse Cholesky up to this many free coordinates.");
 DEFINE_bool(verbose, false, "Print the solver's progress lines.");
 DEFINE_string(output, "", "perturb: the perturbed mesh (binary .msh 4.1 when .msh).");
 DEFINE_double(amount, 0.3, "perturb: move length as a fraction of the shortest incident edge.");
@@ -479,6 +483,9 @@ tmop::SolverOptions solver_options(const Context& ctx) {
   so.max_seconds = FLAGS_max_seconds;
   so.threads = ctx.threads;
   so.verbose = FLAGS_verbose;
+  tmop::linear_solver_from_name(FLAGS_linear_solver, &so.linear_solver);
+  tmop::solver_method_from_name(FLAGS_solver, &so.method);
+  so.cholesky_max_free_coordinates = FLAGS_cholesky_max_free_coordinates;
   return so;
 }
 
@@ -727,6 +734,14 @@ int main(int argc, char** argv) {
       task != "evaluate" && task != "floor" && task != "perturb")
     return fail(2, "unknown --task '" + task + "'");
   if (FLAGS_repeat < 1) return fail(2, "--repeat must be >= 1");
+  {
+    tmop::SolverOptions::LinearSolver ls;
+    tmop::SolverOptions::Method method;
+    if (!tmop::linear_solver_from_name(FLAGS_linear_solver, &ls))
+      return fail(2, "unknown --linear_solver '" + FLAGS_linear_solver + "'");
+    if (!tmop::solver_method_from_name(FLAGS_solver, &method))
+      return fail(2, "unknown --solver '" + FLAGS_solver + "'");
+  }
 
   Json j;
   j.str("tool", "tmop_bench")
@@ -760,7 +775,9 @@ int main(int argc, char** argv) {
   j.obj("mesh", mesh_json(ctx.mesh, FLAGS_input))
       .num("read_seconds", read_seconds)
       .integer("threads", FLAGS_threads > 0 ? FLAGS_threads : std::thread::hardware_concurrency())
-      .integer("repeat", FLAGS_repeat);
+      .integer("repeat", FLAGS_repeat)
+      .str("linear_solver_flag", FLAGS_linear_solver)
+      .str("solver_flag", FLAGS_solver);
 
   int rc = 0;
   if (task == "read") {
