@@ -69,15 +69,16 @@ void compute_T(int n, int d, const Mesh& mesh, const std::int32_t* nodes, const 
 }
 
 // min det T over the sample points of term 0, and the cells where it is <= 0.
-double min_target_det(const Mesh& mesh, const std::vector<int>& point_cell,
-                      const std::vector<double>& G, int stride, std::vector<int>* bad) {
+double min_target_det(const Mesh& mesh, const std::vector<std::int32_t>& point_cell,
+                      const std::vector<double>& G, const std::vector<std::int64_t>& g_offset,
+                      std::vector<int>* bad) {
   const int d = mesh.dim();
   double worst = std::numeric_limits<double>::infinity();
   if (bad) bad->clear();
   for (std::size_t p = 0; p < point_cell.size(); ++p) {
     const int c = point_cell[p];
     double T[9];
-    compute_T(mesh.cell_size(c), d, mesh, mesh.cell(c), G.data() + p * stride, T);
+    compute_T(mesh.cell_size(c), d, mesh, mesh.cell(c), G.data() + g_offset[p], T);
     const double det = det_d(T, d);
     worst = std::min(worst, det);
     if (bad && !(det > 0) && (bad->empty() || bad->back() != c)) bad->push_back(c);
@@ -272,7 +273,9 @@ class StageCallback final : public ceres::IterationCallback {
 
 // Exact mean of sum_t c_t mu_t over elements (weights of a cell's points sum to 1).
 double exact_objective(const Mesh& mesh, const StageSpec& spec,
-                       const std::vector<std::vector<double>>& G, const std::vector<int>& cells,
+                       const std::vector<std::vector<double>>& G,
+                       const std::vector<std::int64_t>& g_offset,
+                       const std::vector<std::int32_t>& cells,
                        const std::vector<double>& point_weight, int num_elements) {
   const int d = mesh.dim();
   double sum = 0;
@@ -283,7 +286,7 @@ double exact_objective(const Mesh& mesh, const StageSpec& spec,
       const double c_t = spec.terms[t].weights.empty() ? 1.0 : spec.terms[t].weights[p];
       if (c_t == 0) continue;
       double T[9];
-      compute_T(n, d, mesh, mesh.cell(c), G[t].data() + p * kMaxCellNodes * 3, T);
+      compute_T(n, d, mesh, mesh.cell(c), G[t].data() + g_offset[p], T);
       sum += point_weight[p] * c_t * spec.terms[t].metric->value(T);
     }
   }
@@ -355,20 +358,18 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   if (static_cast<int>(fixed.size()) != mesh->num_vertices())
     return Status::Failure("fixed-vertex flags: one per vertex expected");
 
-  // Canonical sample-point list.
-  std::vector<int> point_cell, point_index;
-  std::vector<double> point_weight;
-  int num_elements = 0;
-  for (int c = 0; c < mesh->num_cells(); ++c) {
-    if (!mesh->is_element(c, d)) continue;
-    ++num_elements;
-    const auto& pts = sample_points(mesh->cell_type(c), spec.rule);
-    for (std::size_t k = 0; k < pts.size(); ++k) {
-      point_cell.push_back(c);
-      point_index.push_back(static_cast<int>(k));
-      point_weight.push_back(pts[k].weight);
-    }
+  // Sample points: the rule's canonical set, then the stage's extra points.
+  SampleSet points = canonical_sample_set(*mesh, spec.rule);
+  for (std::size_t k = 0; k < spec.extra_points.size(); ++k) {
+    const int c = spec.extra_points.cell[k];
+    if (c < 0 || c >= mesh->num_cells() || !mesh->is_element(c, d))
+      return Status::Failure("extra sample point " + std::to_string(k) + ": cell " +
+                             std::to_string(c) + " is not an element");
+    points.add(c, &spec.extra_points.xi[3 * k], spec.extra_points.weight[k]);
   }
+  const int num_elements = mesh->num_elements();
+  const std::vector<std::int32_t>& point_cell = points.cell;
+  const std::vector<double>& point_weight = points.weight;
   const std::size_t P = point_cell.size();
   for (const TermSpec& t : spec.terms)
     if (!t.weights.empty() && t.weights.size() != P)
@@ -397,9 +398,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   std::vector<double> shortest;
   cell_edge_lengths(*mesh, &shortest);
 
-  // Targets -> G per term per point (fixed stride kMaxCellNodes * 3 keeps indexing simple).
-  const int stride = kMaxCellNodes * 3;
-  std::vector<std::vector<double>> G(spec.terms.size(), std::vector<double>(P * stride));
+  // Targets -> G per term per point, packed: point p's n x d block starts at g_offset[p].
+  std::vector<std::int64_t> g_offset(P + 1, 0);
+  for (std::size_t p = 0; p < P; ++p)
+    g_offset[p + 1] = g_offset[p] + std::int64_t(mesh->cell_size(point_cell[p])) * d;
+  std::vector<std::vector<double>> G(spec.terms.size(), std::vector<double>(g_offset[P]));
   for (std::size_t t = 0; t < spec.terms.size(); ++t) {
     TargetSpec target = spec.terms[t].target;
     Mesh reference_copy;
@@ -422,16 +425,15 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       source = &field_copy;
     }
     std::vector<double> W;
-    Status s = build_targets(*source, spec.rule, target, &W);
+    Status s = build_targets(*source, points, target, &W);
     if (!s.ok()) return fail(s.message());
     double grad[kMaxCellNodes * 3], Winv[9];
     for (std::size_t p = 0; p < P; ++p) {
       const CellType type = mesh->cell_type(point_cell[p]);
-      const SamplePoint& sp = sample_points(type, spec.rule)[point_index[p]];
       if (!inverse_d(W.data() + p * d * d, d, Winv))
         return fail("cell " + std::to_string(point_cell[p]) + ": singular target matrix");
-      shape_gradients(type, sp.xi, grad);
-      make_G(cell_num_nodes(type), d, grad, Winv, G[t].data() + p * stride);
+      shape_gradients(type, &points.xi[3 * p], grad);
+      make_G(cell_num_nodes(type), d, grad, Winv, G[t].data() + g_offset[p]);
     }
   }
 
@@ -442,10 +444,10 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   bool barrier = false;
   for (const TermSpec& t : spec.terms) barrier |= t.metric->barrier();
   result->initial_objective =
-      exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements);
+      exact_objective(*mesh, spec, G, g_offset, point_cell, point_weight, num_elements);
 
   std::vector<int> bad;
-  result->min_det_before = min_target_det(*mesh, point_cell, G[0], stride, &bad);
+  result->min_det_before = min_target_det(*mesh, point_cell, G[0], g_offset, &bad);
   if (barrier && !bad.empty())
     return fail("barrier metric on an inverted mesh (untangle first): inverted cells " +
                 list_cells(bad));
@@ -463,7 +465,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       for (int i = 0; i < mesh->cell_size(c); ++i) all_fixed &= fixed[mesh->cell(c)[i]] != 0;
       if (!all_fixed) continue;
       double T[9];
-      compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), G[0].data() + p * stride, T);
+      compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), G[0].data() + g_offset[p], T);
       if (!(det_d(T, d) > 0)) stuck.push_back(c);
     }
     if (!stuck.empty())
@@ -496,7 +498,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                     " is negative or not finite");
       // A term of zero weight still guards its barrier: residuals() is evaluated.
       terms[nt].metric = spec.terms[t].metric.get();
-      terms[nt].G = G[t].data() + p * stride;
+      terms[nt].G = G[t].data() + g_offset[p];
       terms[nt].sqrt_weight = std::sqrt(point_weight[p] * std::max(c_t, 0.0));
       ++nt;
     }
@@ -579,18 +581,21 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     const double theta = untangle_metric->theta();
     double eps = untangle_metric->eps();
     so.max_num_iterations = spec.untangle_round_iterations;
-    for (int round = 0; round < spec.untangle_max_rounds; ++round) {
+    const int max_rounds = result->min_det_before > 0 ? 0 : spec.untangle_max_rounds;
+    for (int round = 0; round < max_rounds; ++round) {
       metrics.push_back(std::make_unique<UntangleMetric>(d, eps, theta));
       for (SamplePointCost& cost : costs) cost.set_metric(0, metrics.back().get());
       if (!solve()) return fail("solver failed: " + summary.message);
       result->final_eps = eps;
-      const double det_min = min_target_det(*mesh, point_cell, G[0], stride, nullptr);
+      const double det_min = min_target_det(*mesh, point_cell, G[0], g_offset, nullptr);
       if (det_min > 0) break;
       const double energy = summary.final_cost;
       const double sigma = std::max(1 - energy / summary.initial_cost, 0.1);
       const double mu = (1 - sigma) * UntangleMetric::chi(det_min, eps);
       eps = det_min < mu ? 2 * std::sqrt(mu * (mu - det_min)) : 1e-12;
-      if (std::getenv("TMOP_DEBUG_EPS")) std::fprintf(stderr, "round %d E %g det_min %g mu %g eps %g\n", round, energy, det_min, mu, eps);
+      if (std::getenv("TMOP_DEBUG_EPS"))
+        std::fprintf(stderr, "round %d E %g det_min %g mu %g eps %g\n", round, energy, det_min, mu,
+                     eps);
     }
   } else {
     const int rounds = spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1;
@@ -609,18 +614,26 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
         }
         if (!(mean > 0)) break;
         for (std::size_t k = 0; k < costs.size(); ++k)
-          costs[k].set_weight_multiplier(std::pow(v[k] / mean + 1e-12, spec.power - 1));
+          costs[k].set_weight_multiplier(std::pow(1 + v[k] / mean, spec.power - 1));
       }
+      // Rounds before the last only steer the weights: a loose solve is enough.
+      const bool last = round + 1 == rounds;
+      so.max_num_iterations =
+          last ? spec.solver.max_iterations : std::min(spec.solver.max_iterations, 20);
+      so.function_tolerance =
+          last ? spec.solver.function_tolerance : std::max(spec.solver.function_tolerance, 1e-4);
       if (!solve()) return fail("solver failed: " + summary.message);
     }
   }
 
   // Ceres leaves the best parameters in place; the callback may have seen a later state.
   const IterationRecord after = measure(*mesh, spec.rule, table);
-  result->min_det_after = min_target_det(*mesh, point_cell, G[0], stride, &result->inverted_cells);
+  result->min_det_after =
+      min_target_det(*mesh, point_cell, G[0], g_offset, &result->inverted_cells);
   result->inverted_after = after.inverted;
   result->min_quality_after = after.min_quality;
-  result->final_objective = exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements);
+  result->final_objective =
+      exact_objective(*mesh, spec, G, g_offset, point_cell, point_weight, num_elements);
   result->termination = callback.reason().empty() ? summary.message : callback.reason();
   norm.undo(mesh);
   if (barrier && after.inverted > 0)  // cannot happen: every accepted step was evaluated

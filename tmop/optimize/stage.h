@@ -26,24 +26,30 @@ namespace tmop {
 struct TermSpec {
   std::shared_ptr<const Metric> metric;  // dimension must equal the mesh's element dimension
   TargetSpec target;
-  // Per-sample-point trade-off weights c_k in the canonical order (target.h); empty means 1.
+  // Per-sample-point trade-off weights c_k in the canonical order (target.h) followed by the
+  // stage's extra points; empty means 1.
   std::vector<double> weights;
 };
 
 struct StageSpec {
   std::string name = "stage";
   SampleRule rule = SampleRule::kDefault;
+  // Extra sample points appended after the canonical ones of `rule` (e.g. where a validity
+  // certificate of a quadratic cell failed). Their weights add to their cells' contributions.
+  SampleSet extra_points;
   std::vector<TermSpec> terms;  // 1 or 2 terms
   // Per-vertex flags (1 = fixed). Empty: every boundary vertex is fixed.
   std::vector<char> fixed;
   SolverOptions solver;
-  // Power-mean order p >= 1: minimise sum_k (mu_k - mu_min)^p instead of the plain sum, which
-  // weights the worst points up. Reached by iteratively reweighted least squares: each round
-  // solves the plain least-squares problem with fixed weights (mu_k / mean mu)^(p-1) from the
-  // previous round, so every Ceres solve keeps the metric's exact Gauss-Newton model (a
-  // residual of the form r |r|^(p-1) slows Levenberg-Marquardt to a crawl).
+  // Power order p >= 1: weight the worst points up. Iteratively reweighted least squares: each
+  // round solves the plain least-squares problem with fixed weights (1 + v_k / mean v)^(p-1),
+  // v_k = mu_k - mu_min from the previous round. This is the stationarity condition of
+  // sum_k m (1 + v_k/m)^p / p (m the mean): ~ the plain sum for good points, ~ v^p for the worst.
+  // Weights never fall below 1, so no element is neglected (weights (v/m)^(p-1) let good
+  // elements collapse onto their barrier), and every Ceres solve keeps the metric's exact
+  // Gauss-Newton model (a residual r |r|^(p-1) slows Levenberg-Marquardt to a crawl).
   double power = 1.0;
-  int power_rounds = 4;  // reweighting rounds after the first solve when power > 1
+  int power_rounds = 3;  // reweighting rounds after the first solve when power > 1
 
   // Untangling schedule (DESIGN.md section 7). When true, terms[0].metric must be an
   // UntangleMetric (metric/untangle.h); the stage solves repeatedly, lowering its eps between

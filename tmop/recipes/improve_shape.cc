@@ -39,6 +39,7 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
     StageSpec stage;
     stage.name = attempt == 0 ? "shape" : "shape (power " + std::to_string(int(power)) + ")";
     stage.rule = options.rule;
+    stage.extra_points = options.extra_points;
     stage.fixed = options.fixed;
     stage.solver = options.solver;
     TermSpec term;

@@ -26,6 +26,7 @@ struct ShapeOptions {
   std::string metric;
   TargetSpec target;  // default: ideal shape, equal size (size does not matter to shape)
   SampleRule rule = SampleRule::kDefault;
+  SampleSet extra_points;  // appended to the rule's points (see StageSpec::extra_points)
   // Power-mean order p >= 1 (1 = plain mean).
   double power = 2.0;
   // Never return a mesh whose worst element is worse than the input's.

@@ -57,10 +57,13 @@ std::string record_json(const IterationRecord& r, bool with_iteration) {
 }  // namespace
 
 std::string recipe_json(const RecipeResult& r) {
-  std::string s = "{\"recipe\": " + json_string(r.recipe) +
-                  ", \"seconds\": " + json_number(r.seconds) +
-                  ", \"before\": " + record_json(r.before, false) +
-                  ", \"after\": " + record_json(r.after, false) + ", \"stages\": [";
+  std::string s =
+      "{\"recipe\": " + json_string(r.recipe) + ", \"seconds\": " + json_number(r.seconds) +
+      ", \"before\": " + record_json(r.before, false) +
+      ", \"after\": " + record_json(r.after, false) +
+      ", \"certified\": " + (r.certified < 0 ? "null" : std::to_string(r.certified)) +
+      ", \"uncertified\": " + (r.uncertified < 0 ? "null" : std::to_string(r.uncertified)) +
+      ", \"stages\": [";
   for (std::size_t i = 0; i < r.stages.size(); ++i) {
     const StageResult& st = r.stages[i];
     s += i ? ", {" : "{";

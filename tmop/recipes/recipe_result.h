@@ -16,10 +16,15 @@ struct RecipeResult {
   std::vector<StageResult> stages;
   IterationRecord before, after;
   double seconds = 0;
+  // Quadratic simplices: cells proven valid everywhere by the Bernstein certificate, and those
+  // not proven (-1 when no certificate was attempted).
+  int certified = -1, uncertified = -1;
+  std::vector<int> uncertified_cells;
 };
 
 // JSON object (no trailing newline) with stable keys, numbers printed with %.17g:
 // {"recipe", "seconds", "before": {"min_quality", "inverted"}, "after": {...},
+//  "certified", "uncertified" (null when not attempted),
 //  "stages": [{"name", "linear_solver", "elements", "sample_points", "free_vertices",
 //   "initial_objective", "final_objective", "iterations", "termination", "seconds",
 //   "inverted_before", "inverted_after", "min_quality_before", "min_quality_after",

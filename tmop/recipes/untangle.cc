@@ -2,7 +2,11 @@
 
 #include <chrono>
 
+#include "tmop/element/bezier.h"
+#include "tmop/element/sample_points.h"
 #include "tmop/metric/untangle.h"
+#include "tmop/quality/jacobian_certificate.h"
+#include "tmop/quality/quality_options.h"
 
 namespace tmop {
 namespace {
@@ -13,6 +17,46 @@ std::string cell_list(const std::vector<int>& cells) {
     s += (i ? ", " : "") + std::to_string(cells[i]);
   if (cells.size() > 10) s += ", ... (" + std::to_string(cells.size()) + " in all)";
   return s;
+}
+
+bool has_certificate(CellType t) { return t == CellType::kTri6 || t == CellType::kTet10; }
+
+// Certifies every tri6 / tet10 element; for each cell not proven valid, adds the lattice points
+// of its non-positive Bernstein coefficients to `extra` (once per point). Returns the number of
+// cells with a certificate; fills `uncertified` and `inverted` (proven inverted).
+int certify(const Mesh& mesh, SampleSet* extra, std::vector<int>* uncertified,
+            std::vector<int>* inverted) {
+  uncertified->clear();
+  inverted->clear();
+  const int d = mesh.dim();
+  int count = 0;
+  double x[kMaxCellNodes * 3], coef[kMaxBezierCoefficients];
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!mesh.is_element(c, d) || !has_certificate(mesh.cell_type(c))) continue;
+    ++count;
+    const CellType t = mesh.cell_type(c);
+    const int n = mesh.cell_size(c);
+    for (int i = 0; i < n; ++i)
+      for (int a = 0; a < d; ++a) x[i * d + a] = mesh.vertex(mesh.cell(c)[i])[a];
+    // The depth tmop_quality uses, so that both report the same cells as proven.
+    const JacobianSign sign = certify_jacobian(t, x, QualityOptions().bezier_subdivision);
+    if (sign == JacobianSign::kPositive) continue;
+    uncertified->push_back(c);
+    if (sign == JacobianSign::kNonPositive) inverted->push_back(c);
+    const int m = jacobian_bezier_coefficients(t, x, coef);
+    const double weight = 1.0 / sample_points(t, SampleRule::kDefault).size();
+    for (int k = 0; k < m; ++k) {
+      if (coef[k] > 0) continue;
+      double xi[3] = {0, 0, 0};
+      jacobian_bezier_point(t, k, xi);
+      bool seen = false;
+      for (std::size_t e = 0; e < extra->size() && !seen; ++e)
+        seen = extra->cell[e] == c && extra->xi[3 * e] == xi[0] && extra->xi[3 * e + 1] == xi[1] &&
+               extra->xi[3 * e + 2] == xi[2];
+      if (!seen) extra->add(c, xi, weight);
+    }
+  }
+  return count;
 }
 
 }  // namespace
@@ -30,10 +74,17 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
 
-  if (result->before.inverted > 0) {
+  SampleSet extra;
+  std::vector<int> uncertified, proven_inverted;
+  int with_certificate = 0;
+  if (options.certify) with_certificate = certify(*mesh, &extra, &uncertified, &proven_inverted);
+  const int rounds = options.certify && with_certificate > 0 ? 1 + options.certify_rounds : 1;
+  for (int round = 0; round < rounds; ++round) {
     StageSpec stage;
-    stage.name = "untangle";
+    stage.name =
+        round == 0 ? "untangle" : "untangle (certification round " + std::to_string(round) + ")";
     stage.rule = options.rule;
+    stage.extra_points = extra;
     stage.fixed = options.fixed;
     stage.solver = options.solver;
     stage.untangle = true;
@@ -50,23 +101,38 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
     StageResult sr;
     Status s = optimize_stage(mesh, stage, &sr);
     if (!s.ok()) return s;
-    result->stages.push_back(sr);
+    if (sr.solves > 0) result->stages.push_back(sr);
     if (!sr.inverted_cells.empty()) {
       finish();
       return Status::Failure("could not untangle within " + std::to_string(options.max_rounds) +
                              " rounds: " + std::to_string(sr.inverted_cells.size()) +
                              " cells still inverted: " + cell_list(sr.inverted_cells));
     }
+    if (options.improve_shape_after) {
+      ShapeOptions shape = options.shape;
+      shape.fixed = options.fixed;
+      shape.extra_points = extra;
+      RecipeResult shape_result;
+      s = improve_shape(mesh, shape, &shape_result);
+      if (!s.ok()) return s;
+      for (StageResult& st : shape_result.stages) result->stages.push_back(std::move(st));
+    }
+    if (!options.certify || with_certificate == 0) break;
+    const std::size_t points_before = extra.size();
+    certify(*mesh, &extra, &uncertified, &proven_inverted);
+    if (uncertified.empty() || extra.size() == points_before) break;
   }
-  if (options.improve_shape_after) {
-    ShapeOptions shape = options.shape;
-    shape.fixed = options.fixed;
-    RecipeResult shape_result;
-    Status s = improve_shape(mesh, shape, &shape_result);
-    if (!s.ok()) return s;
-    for (StageResult& st : shape_result.stages) result->stages.push_back(std::move(st));
+  if (options.certify && with_certificate > 0) {
+    result->certified = with_certificate - static_cast<int>(uncertified.size());
+    result->uncertified = static_cast<int>(uncertified.size());
+    result->uncertified_cells = uncertified;
   }
   finish();
+  if (!proven_inverted.empty())
+    return Status::Failure(std::to_string(proven_inverted.size()) +
+                           " quadratic cells are inverted between their sample points "
+                           "(Bernstein certificate): " +
+                           cell_list(proven_inverted));
   return Status::Ok();
 }
 

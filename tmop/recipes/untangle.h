@@ -10,7 +10,8 @@
 // Result: Ok when the mesh is untangled (and improved). Failure when an inverted element has
 // every node fixed (nothing can repair it: the message names the cells; the mesh is unchanged)
 // or when inverted elements remain after the rounds allowed (the message names them; the mesh
-// then holds the best state reached, so a caller may still write it on request).
+// then holds the best state reached, so a caller may still write it on request), or when a
+// quadratic cell is proven inverted by its certificate after the certification rounds.
 #ifndef TMOP_RECIPES_UNTANGLE_H_
 #define TMOP_RECIPES_UNTANGLE_H_
 
@@ -32,7 +33,13 @@ struct UntangleOptions {
   int round_iterations = 40;
   // After untangling, run the shape recipe (a barrier stage) from the valid mesh.
   bool improve_shape_after = true;
-  ShapeOptions shape;       // options of that stage (its fixed flags are replaced by ours)
+  ShapeOptions shape;  // options of that stage (its fixed flags are replaced by ours)
+  // Quadratic simplices (tri6, tet10): after the stages, prove det J > 0 over each whole cell
+  // with the Bernstein coefficients of det J (quality/jacobian_certificate.h). A cell that is not
+  // proven valid gets extra sample points where its coefficients are <= 0 and the stages run
+  // again, at most certify_rounds times. RecipeResult reports certified / uncertified cells.
+  bool certify = true;
+  int certify_rounds = 4;
   std::vector<char> fixed;  // per-vertex flags; empty = boundary fixed
   SolverOptions solver;
 };

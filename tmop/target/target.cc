@@ -70,7 +70,22 @@ double cell_equivalent_edge(const Mesh& mesh, int c) {
   return volume < 0 ? -h : h;
 }
 
+SampleSet canonical_sample_set(const Mesh& mesh, SampleRule rule) {
+  SampleSet set;
+  const int d = mesh.dim();
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!mesh.is_element(c, d)) continue;
+    for (const SamplePoint& p : sample_points(mesh.cell_type(c), rule)) set.add(c, p.xi, p.weight);
+  }
+  return set;
+}
+
 Status build_targets(const Mesh& mesh, SampleRule rule, const TargetSpec& spec,
+                     std::vector<double>* W) {
+  return build_targets(mesh, canonical_sample_set(mesh, rule), spec, W);
+}
+
+Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec& spec,
                      std::vector<double>* W) {
   const int d = mesh.dim();
   if (d < 2) return Status::Failure("targets need a mesh of 2D or 3D elements");
@@ -116,41 +131,44 @@ Status build_targets(const Mesh& mesh, SampleRule rule, const TargetSpec& spec,
     return Status::Failure("target size is not positive (degenerate mesh?)");
 
   std::vector<double> out;
+  out.reserve(points.size() * d * d);
   double x[kMaxCellNodes * 3], N[kMaxCellNodes];
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    if (!mesh.is_element(c, d)) continue;
+  int cached_cell = -1;
+  double h_cell = h_all, ideal[9];
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const int c = points.cell[p];
+    const double* xi = &points.xi[3 * p];
     const CellType t = mesh.cell_type(c);
-    double ideal[9];
-    ideal_jacobian(t, ideal);
-    double h_cell = h_all;
-    if (spec.type == TargetType::kIdealLocalSize) {
-      h_cell = std::abs(cell_equivalent_edge(mesh, c));
-      if (!(h_cell > 0))
-        return Status::Failure("cell " + std::to_string(c) + ": zero volume, no local size");
-    }
-    if (spec.type == TargetType::kReference) gather(ref, c, x);
-    for (const SamplePoint& p : sample_points(t, rule)) {
-      double w[9];
-      if (spec.type == TargetType::kReference) {
-        cell_jacobian(t, x, ref.space_dim, p.xi, w);
-        const double dw = det(w, d);
-        if (!(std::abs(dw) > 0) || !std::isfinite(dw))
-          return Status::Failure("cell " + std::to_string(c) +
-                                 ": reference Jacobian is singular at a sample point");
-      } else {
-        double h = h_cell;
-        if (field) {
-          shape_values(t, p.xi, N);
-          h = 0;
-          for (int i = 0; i < mesh.cell_size(c); ++i) h += N[i] * field->values[mesh.cell(c)[i]];
-          if (!(h > 0))
-            return Status::Failure("size field '" + spec.size_field + "' is not positive in cell " +
-                                   std::to_string(c));
-        }
-        for (int i = 0; i < d * d; ++i) w[i] = h * ideal[i];
+    if (c != cached_cell) {
+      cached_cell = c;
+      ideal_jacobian(t, ideal);
+      if (spec.type == TargetType::kIdealLocalSize) {
+        h_cell = std::abs(cell_equivalent_edge(mesh, c));
+        if (!(h_cell > 0))
+          return Status::Failure("cell " + std::to_string(c) + ": zero volume, no local size");
       }
-      out.insert(out.end(), w, w + d * d);
+      if (spec.type == TargetType::kReference) gather(ref, c, x);
     }
+    double w[9];
+    if (spec.type == TargetType::kReference) {
+      cell_jacobian(t, x, ref.space_dim, xi, w);
+      const double dw = det(w, d);
+      if (!(std::abs(dw) > 0) || !std::isfinite(dw))
+        return Status::Failure("cell " + std::to_string(c) +
+                               ": reference Jacobian is singular at a sample point");
+    } else {
+      double h = h_cell;
+      if (field) {
+        shape_values(t, xi, N);
+        h = 0;
+        for (int i = 0; i < mesh.cell_size(c); ++i) h += N[i] * field->values[mesh.cell(c)[i]];
+        if (!(h > 0))
+          return Status::Failure("size field '" + spec.size_field + "' is not positive in cell " +
+                                 std::to_string(c));
+      }
+      for (int i = 0; i < d * d; ++i) w[i] = h * ideal[i];
+    }
+    out.insert(out.end(), w, w + d * d);
   }
   W->swap(out);
   return Status::Ok();

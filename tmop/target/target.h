@@ -43,10 +43,29 @@ const char* target_type_name(TargetType type);
 // the Gauss rule; negative volumes give a negative length.
 double cell_equivalent_edge(const Mesh& mesh, int cell);
 
+// A list of sample points: cell index, reference coordinates and weight of each. The canonical
+// set of a rule lists, for every element cell in order, the points of sample_points(type, rule);
+// stages may append extra points (e.g. where a validity certificate failed).
+struct SampleSet {
+  std::vector<std::int32_t> cell;
+  std::vector<double> xi;  // 3 per point
+  std::vector<double> weight;
+  std::size_t size() const { return cell.size(); }
+  void add(int c, const double* x, double w) {
+    cell.push_back(c);
+    xi.insert(xi.end(), x, x + 3);
+    weight.push_back(w);
+  }
+};
+SampleSet canonical_sample_set(const Mesh& mesh, SampleRule rule);
+
 // Appends nothing on failure. On success W holds (number of sample points) * d * d values.
 // Fails (with a message) for a reference mesh of another topology, a missing size field, a
 // non-positive size, or a reference Jacobian that is singular (reference targets need W^-1).
 Status build_targets(const Mesh& mesh, SampleRule rule, const TargetSpec& spec,
+                     std::vector<double>* W);
+// The same for an explicit sample set.
+Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec& spec,
                      std::vector<double>* W);
 
 }  // namespace tmop
