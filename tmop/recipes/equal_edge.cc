@@ -5,7 +5,10 @@
 #include "tmop/recipes/improve_shape.h"
 
 namespace tmop {
+namespace {
 
+// Length of a TermSpec::weights vector: sample points of `rule` over the elements, canonical
+// order (target.h). A per-term scalar weight in TermSpec would make this unnecessary.
 int count_sample_points(const Mesh& mesh, SampleRule rule) {
   const int d = mesh.dim();
   int n = 0;
@@ -13,6 +16,8 @@ int count_sample_points(const Mesh& mesh, SampleRule rule) {
     if (mesh.is_element(c, d)) n += static_cast<int>(sample_points(mesh.cell_type(c), rule).size());
   return n;
 }
+
+}  // namespace
 
 Status equal_edge(Mesh* mesh, const EqualEdgeOptions& options, RecipeResult* result) {
   const auto start = std::chrono::steady_clock::now();

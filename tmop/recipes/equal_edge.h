@@ -58,10 +58,6 @@ struct EqualEdgeOptions {
 
 Status equal_edge(Mesh* mesh, const EqualEdgeOptions& options, RecipeResult* result);
 
-// Number of sample points of `rule` over the elements of `mesh`, in the canonical order of
-// target.h: the length of a TermSpec::weights vector.
-int count_sample_points(const Mesh& mesh, SampleRule rule);
-
 }  // namespace tmop
 
 #endif  // TMOP_RECIPES_EQUAL_EDGE_H_
