@@ -100,6 +100,30 @@ TEST(Laplace, GradedTrianglesStayValid) {
   EXPECT_GT(after.mean_ratio.mean, before.mean_ratio.mean);
 }
 
+// A fan around a free vertex whose ring has a long thin spike: the centroid of the ring lies in
+// the spike, outside the region from which the vertex sees every ring edge, so moving there
+// would invert two triangles. The move is refused and the vertex stays exactly where it was.
+TEST(Laplace, RefusesAMoveThatWouldInvert) {
+  Mesh mesh;
+  mesh.space_dim = 2;
+  const double x[8][2] = {{0, 0},    {-0.5, -0.5}, {0.2, -0.05}, {3, -0.02},
+                          {3.05, 0}, {3, 0.02},    {0.2, 0.05},  {-0.5, 0.5}};
+  for (const auto& p : x) mesh.add_vertex(p);
+  for (std::int32_t i = 1; i <= 7; ++i) {
+    const std::int32_t t[3] = {0, i, i % 7 + 1};
+    mesh.add_cell(CellType::kTri3, t);
+  }
+  ASSERT_EQ(compute_quality(mesh).inverted_cells, 0);
+  LaplaceOptions opt;
+  opt.fixed = {0, 1, 1, 1, 1, 1, 1, 1};
+  RecipeResult result;
+  ASSERT_TRUE(laplace(&mesh, opt, &result).ok());
+  EXPECT_EQ(mesh.vertex(0)[0], 0.0);
+  EXPECT_EQ(mesh.vertex(0)[1], 0.0);
+  EXPECT_EQ(compute_quality(mesh).inverted_cells, 0);
+  EXPECT_EQ(result.stages[0].iterations, 1);  // nothing moved: stops after the first sweep
+}
+
 TEST(Laplace, RefusesQuadraticElements) {
   Mesh mesh;
   mesh.space_dim = 2;
