@@ -194,8 +194,7 @@ TEST(BoundaryClassification, PartAtTheDefaultAngleSeesTheCoarsePole) {
   EXPECT_EQ(c.patches.size(), 8u);
 }
 
-TEST(BoundaryClassification, SquareWithHole2D) {
-  const Mesh mesh = load_geometry_mesh("square_hole.msh");
+void expect_square_with_hole(const Mesh& mesh) {
   ASSERT_EQ(mesh.space_dim, 2);
   BoundaryClassification c;
   ASSERT_TRUE(classify_boundary(mesh, {}, &c).ok());
@@ -218,6 +217,27 @@ TEST(BoundaryClassification, SquareWithHole2D) {
   for (const BoundaryCurve& curve : c.curves) straight += curve.straight;
   EXPECT_EQ(straight, 4);
   EXPECT_TRUE(c.patches.empty());
+}
+
+TEST(BoundaryClassification, SquareWithHole2D) {
+  expect_square_with_hole(load_geometry_mesh("square_hole.msh"));
+}
+
+TEST(BoundaryClassification, SquareWithHole2DTri6) {
+  // Mid-edge nodes of boundary edges join their curves (gmsh puts them on the circle).
+  expect_square_with_hole(load_geometry_mesh("square_hole_tri6.msh"));
+}
+
+TEST(BoundaryClassification, BoxSurfaceMeshTri6) {
+  const Mesh mesh = load_geometry_mesh("box_surface_tri6.msh");
+  BoundaryClassification c;
+  ASSERT_TRUE(classify_boundary(mesh, {}, &c).ok());
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    EXPECT_EQ(c.kind[v], box_kind(mesh.vertex(v))) << v;
+  }
+  EXPECT_EQ(c.count(VertexKind::kFixed), 8);
+  EXPECT_EQ(c.curves.size(), 12u);
+  EXPECT_EQ(c.patches.size(), 6u);
 }
 
 TEST(BoundaryClassification, FeatureAngleDecidesCorners2D) {
