@@ -40,7 +40,8 @@ DEFINE_string(reference, "",
               "(implies --target=reference).");
 DEFINE_string(size_field, "", "Point-data array of target edge lengths (--target=size_field).");
 DEFINE_string(sample_points, "default", "Sample rule: default, corners, nodes, centroid, gauss.");
-DEFINE_double(power, 2.0, "Power-mean order of the objective (1 = plain mean).");
+DEFINE_double(power, 1.0,
+              "Power order of the objective: 1 = plain mean; > 1 weights the worst elements up.");
 DEFINE_string(solver, "lm", "Trust-region method: lm (Levenberg-Marquardt) or dogleg.");
 DEFINE_string(linear_solver, "auto", "auto, cholesky (sparse normal Cholesky) or cgnr.");
 DEFINE_int32(max_iterations, 200, "Maximum solver iterations per stage.");

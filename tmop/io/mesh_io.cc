@@ -74,9 +74,16 @@ void finish_read(Mesh* mesh) {
   bool flat = true;
   for (CellType t : mesh->cell_types)
     if (cell_dim(t) > 2) flat = false;
+  // Planar when every z is 0 up to round-off: generators (gmsh's spline curves, say) leave z
+  // values of 1e-17 on meshes that are meant to lie in the plane z = 0. The test is relative to
+  // the mesh's extent, so the z values dropped are below 1e-12 of its size.
   const std::size_t n = mesh->coords.size() / 3;
-  for (std::size_t v = 0; v < n && flat; ++v)
-    if (mesh->coords[3 * v + 2] != 0.0) flat = false;
+  double extent = 0, zmax = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    extent = std::max({extent, std::abs(mesh->coords[3 * v]), std::abs(mesh->coords[3 * v + 1])});
+    zmax = std::max(zmax, std::abs(mesh->coords[3 * v + 2]));
+  }
+  if (!(zmax <= 1e-12 * extent) && zmax != 0.0) flat = false;
   if (!flat) return;
   for (std::size_t v = 0; v < n; ++v) {
     mesh->coords[2 * v] = mesh->coords[3 * v];

@@ -636,6 +636,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       exact_objective(*mesh, spec, G, g_offset, point_cell, point_weight, num_elements);
   result->termination = callback.reason().empty() ? summary.message : callback.reason();
   norm.undo(mesh);
+  // Mapping back is not bit-exact; vertices that were never free keep their input coordinates.
+  for (int v = 0; v < mesh->num_vertices(); ++v)
+    if (fixed[v] || !in_problem[v])
+      for (int a = 0; a < mesh->space_dim; ++a)
+        mesh->vertex(v)[a] = original[std::size_t(v) * mesh->space_dim + a];
   if (barrier && after.inverted > 0)  // cannot happen: every accepted step was evaluated
     return fail("internal error: a barrier stage produced inverted elements");
   result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

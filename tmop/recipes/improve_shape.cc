@@ -57,7 +57,7 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
     // The worst element got worse: weight the worst elements up and start again.
     mesh->coords = original;
     result->after = result->before;
-    power *= 2;
+    power = power < 2 ? 2 : power * 2;
     if (attempt == 2) {
       result->stages.back().termination +=
           "; worst element would get worse at every power tried: input mesh kept";

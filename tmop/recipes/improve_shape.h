@@ -3,10 +3,12 @@
 // the ideal element's shape (equilateral triangle, square, regular tet, cube, right prism,
 // pyramid), whatever its size. Barrier metric by default, so a valid mesh stays valid.
 //
-// The default objective is a power mean of order 2 of the shape metric (sum of mu^2): a plain
-// mean lets the worst element get worse while the average improves; squaring weights the worst
-// elements up. The recipe then checks the worst element: if it got worse it re-runs with a
-// higher order, and it never returns a mesh whose worst element is worse than the input's.
+// The objective is the plain mean of the shape metric (power 1): one Ceres solve, and the
+// result is exactly invariant to translation and scaling and to rotation up to the solver
+// tolerance. A plain mean can let the worst element get worse while the average improves, so
+// the recipe checks the worst element afterwards: if it got worse, it solves again from the
+// input with the worst elements weighted up (power 2, then 4; StageSpec::power), and it never
+// returns a mesh whose worst element is worse than the input's (it keeps the input then).
 #ifndef TMOP_RECIPES_IMPROVE_SHAPE_H_
 #define TMOP_RECIPES_IMPROVE_SHAPE_H_
 
@@ -27,8 +29,8 @@ struct ShapeOptions {
   TargetSpec target;  // default: ideal shape, equal size (size does not matter to shape)
   SampleRule rule = SampleRule::kDefault;
   SampleSet extra_points;  // appended to the rule's points (see StageSpec::extra_points)
-  // Power-mean order p >= 1 (1 = plain mean).
-  double power = 2.0;
+  // Power order p >= 1 of the first solve (1 = plain mean; see StageSpec::power).
+  double power = 1.0;
   // Never return a mesh whose worst element is worse than the input's.
   bool guard_worst = true;
   std::vector<char> fixed;  // per-vertex flags; empty = boundary fixed
