@@ -148,6 +148,27 @@ TEST(BoundaryConstraints, AnalyticSphereAndCylinder) {
   }
 }
 
+TEST(BoundaryConstraints, UserGeometryFollowsANormalisedMesh) {
+  // The optimizer's normalisation x' = (x - c) / L: the same vertices land on the sphere and
+  // the file's surface, now mapped into the normalised frame.
+  Mesh mesh = load_geometry_mesh("part.msh");
+  const double c[3] = {1.0, 0.4, 0.6}, L = 0.07;
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    for (int i = 0; i < 3; ++i) mesh.vertex(v)[i] = (mesh.vertex(v)[i] - c[i]) / L;
+  }
+  for (const std::string& spec :
+       {std::string("sphere:1.45,0.5,0.5,0.25"), geometry_data("cavity_sphere.stl")}) {
+    BoundaryOptions options;
+    options.feature_angle_deg = 40;
+    options.geometry = spec;
+    std::copy(c, c + 3, options.geometry_frame.centre);
+    options.geometry_frame.length = L;
+    auto bc = build(mesh, options);
+    EXPECT_EQ(bc->num_on_user_geometry(), 80) << spec;
+    walk_all(mesh, *bc, 0.03 / L, 1e-12);
+  }
+}
+
 TEST(BoundaryConstraints, ReferenceSurfaceFile) {
   const Mesh mesh = load_geometry_mesh("part.msh");
   BoundaryOptions options;

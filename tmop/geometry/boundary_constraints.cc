@@ -46,7 +46,7 @@ Status BoundaryConstraints::Build(const Mesh& mesh, const BoundaryOptions& optio
   Status s = classify_boundary(mesh, classify, &bc->classification_);
   if (!s.ok()) return s;
   GeometrySource source;
-  s = load_geometry_source(options.geometry, &source);
+  s = load_geometry_source(options.geometry, &source, options.geometry_frame);
   if (!s.ok()) return s;
   const int dim = mesh.dim();
   const int space = mesh.space_dim;

@@ -31,6 +31,7 @@
 #include "tmop/core/status.h"
 #include "tmop/geometry/boundary_classification.h"
 #include "tmop/geometry/geometry_manifold.h"
+#include "tmop/geometry/geometry_source.h"
 #include "tmop/mesh/mesh.h"
 
 namespace tmop {
@@ -50,6 +51,11 @@ struct BoundaryOptions {
   // boundary edge length. 0.05 accepts a reference triangulation's chord error while keeping
   // vertices of other surfaces (one or more edge lengths away) on their own patches.
   double on_geometry_tolerance = 0.05;
+  // optimize/ solves in normalised coordinates x' = (x - centre) / length: pass the mesh as
+  // normalised to Build and that centre / length here, and the user geometry (given in the
+  // user's units) is mapped the same way. The own-boundary geometry needs nothing: it is built
+  // from the mesh as passed.
+  GeometryFrame geometry_frame;
 };
 
 class BoundaryConstraints {

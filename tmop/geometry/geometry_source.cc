@@ -38,7 +38,13 @@ double norm3(const double* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2
 
 }  // namespace
 
-Status load_geometry_source(const std::string& spec, GeometrySource* out) {
+Status load_geometry_source(const std::string& spec, GeometrySource* out,
+                            const GeometryFrame& frame) {
+  if (!(frame.length > 0)) return Status::Failure("geometry: frame length must be positive");
+  // Points and lengths map to the frame; directions do not change.
+  auto point = [&](double* p) {
+    for (int i = 0; i < 3; ++i) p[i] = (p[i] - frame.centre[i]) / frame.length;
+  };
   *out = GeometrySource();
   if (spec.empty()) {
     out->description = "own boundary";
@@ -55,16 +61,17 @@ Status load_geometry_source(const std::string& spec, GeometrySource* out) {
     }
     out->kind = GeometrySourceKind::kAnalytic;
     out->description = name;
+    point(x.data());
     if (name == "sphere") {
       if (!(x[3] > 0)) return Status::Failure("geometry '" + spec + "': radius must be > 0");
-      out->surface = std::make_unique<SphereManifold>(x.data(), x[3]);
+      out->surface = std::make_unique<SphereManifold>(x.data(), x[3] / frame.length);
     } else if (name == "plane") {
       if (norm3(&x[3]) == 0) return Status::Failure("geometry '" + spec + "': zero normal");
       out->surface = std::make_unique<PlaneManifold>(x.data(), &x[3]);
     } else {
       if (norm3(&x[3]) == 0) return Status::Failure("geometry '" + spec + "': zero axis");
       if (!(x[6] > 0)) return Status::Failure("geometry '" + spec + "': radius must be > 0");
-      out->surface = std::make_unique<CylinderManifold>(x.data(), &x[3], x[6]);
+      out->surface = std::make_unique<CylinderManifold>(x.data(), &x[3], x[6] / frame.length);
     }
     return Status::Ok();
   }
@@ -91,6 +98,7 @@ Status load_geometry_source(const std::string& spec, GeometrySource* out) {
     usable = norm3(n) > 1e-14 * h * h;
   }
   if (!usable) return Status::Failure(spec + ": the surface has no triangle with positive area");
+  for (std::size_t v = 0; v + 2 < vertices.size(); v += 3) point(&vertices[v]);
   out->kind = GeometrySourceKind::kSurfaceFile;
   out->description = spec;
   out->surface = std::make_unique<TriangleSurfaceManifold>(std::move(vertices), triangles);

@@ -29,7 +29,15 @@ struct GeometrySource {
   std::string description;                    // for reports: "own boundary", "sphere", PATH
 };
 
-Status load_geometry_source(const std::string& spec, GeometrySource* out);
+// The geometry in the coordinates x' = (x - centre) / length (centre[3], length > 0) of a mesh
+// that the optimizer normalised; the spec's numbers and the file are in the user's units.
+struct GeometryFrame {
+  double centre[3] = {0, 0, 0};
+  double length = 1;
+};
+
+Status load_geometry_source(const std::string& spec, GeometrySource* out,
+                            const GeometryFrame& frame = GeometryFrame());
 
 }  // namespace tmop
 
