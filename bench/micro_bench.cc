@@ -23,7 +23,7 @@
 #include "tmop/metric/metric.h"
 #include "tmop/optimize/sample_point_cost.h"
 #include "tmop/recipes/improve_shape.h"
-#include "tmop/target/ideal_element.h"
+#include "tmop/element/ideal_element.h"
 
 namespace {
 

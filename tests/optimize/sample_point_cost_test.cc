@@ -12,7 +12,7 @@
 
 #include "tmop/element/sample_points.h"
 #include "tmop/element/shape.h"
-#include "tmop/target/ideal_element.h"
+#include "tmop/element/ideal_element.h"
 
 namespace tmop {
 namespace {

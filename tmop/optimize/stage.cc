@@ -15,7 +15,7 @@
 #include "tmop/mesh/topology.h"
 #include "tmop/metric/untangle.h"
 #include "tmop/optimize/sample_point_cost.h"
-#include "tmop/target/ideal_element.h"
+#include "tmop/element/ideal_element.h"
 
 namespace tmop {
 namespace {

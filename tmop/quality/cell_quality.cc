@@ -9,7 +9,7 @@
 #include "tmop/element/sample_points.h"
 #include "tmop/element/shape.h"
 #include "tmop/quality/corner_frames.h"
-#include "tmop/quality/ideal_element.h"
+#include "tmop/element/ideal_element.h"
 #include "tmop/quality/jacobian_certificate.h"
 
 namespace tmop {
@@ -179,7 +179,7 @@ void measure_corners(CellType type, const double* p, bool linear, bool simplex, 
   }
 }
 
-// W^-1 of every type that has ideal_reference_jacobian (row-major, d x d), computed once.
+// W^-1 of every type that has ideal_jacobian (row-major, d x d), computed once.
 struct IdealInverses {
   double w_inv[kNumCellTypes][9];
 };
@@ -189,7 +189,7 @@ IdealInverses build_ideal_inverses() {
     const CellType type = static_cast<CellType>(t);
     const CellInfo& info = cell_info(type);
     if (info.order != 2 || info.dim < 2) continue;
-    const double* w = ideal_reference_jacobian(type);
+    const double* w = ideal_jacobian(type);
     if (info.dim == 2) {
       Eigen::Map<Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(out.w_inv[t]) =
           RowMajorMap<2>(w).inverse();

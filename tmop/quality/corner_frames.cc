@@ -5,7 +5,7 @@
 #include <cmath>
 #include <utility>
 
-#include "tmop/quality/ideal_element.h"
+#include "tmop/element/ideal_element.h"
 
 namespace tmop {
 namespace {

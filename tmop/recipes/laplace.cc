@@ -9,7 +9,7 @@
 #include "tmop/mesh/topology.h"
 #include "tmop/metric/small_matrix.h"
 #include "tmop/optimize/stage.h"
-#include "tmop/target/ideal_element.h"
+#include "tmop/element/ideal_element.h"
 
 namespace tmop {
 namespace {

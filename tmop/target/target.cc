@@ -5,7 +5,7 @@
 
 #include "tmop/element/shape.h"
 #include "tmop/mesh/topology.h"
-#include "tmop/target/ideal_element.h"
+#include "tmop/element/ideal_element.h"
 
 namespace tmop {
 namespace {
