@@ -137,7 +137,9 @@ std::string command_output(const std::string& command) {
 }
 
 // Short commit of the checkout this file was compiled from, "-dirty" when tmop/ has local
-// changes (the engine being measured is then not exactly the commit).
+// changes (the engine being measured is then not exactly the commit). It is read when the
+// program runs, so the record also carries the build time ("built"): a binary older than the
+// commit measures an older engine.
 std::string git_commit() {
   std::string dir = __FILE__;
   dir = dir.substr(0, dir.find_last_of('/'));
@@ -759,6 +761,7 @@ int main(int argc, char** argv) {
       .str("task", task)
       .str("date", utc_now())
       .str("commit", git_commit())
+      .str("built", __DATE__ " " __TIME__)
       .obj("machine", machine_json())
       .num("load_average_1min", load_average());
 
