@@ -1,6 +1,7 @@
 // tmop_optimize: improve a mesh by moving its nodes (Target-Matrix Optimization Paradigm).
 //
-//   tmop_optimize --input=IN --output=OUT [--recipe=auto|shape|untangle] [--metric=NAME]
+//   tmop_optimize --input=IN --output=OUT [--recipe=NAME] [--boundary=fixed|slide]
+//                 [--geometry=SPEC] [--metric=NAME]
 //                 [--target=NAME] [--reference=FILE] [--sample_points=RULE] [--power=P]
 //                 [--solver=lm|dogleg] [--linear_solver=auto|cholesky|cgnr]
 //                 [--max_iterations=N] [--threads=N] [--report=FILE.json] [--verbose]
@@ -11,6 +12,7 @@
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -19,7 +21,11 @@
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/orientation.h"
 #include "tmop/mesh/validate.h"
+#include "tmop/recipes/equal_edge.h"
 #include "tmop/recipes/improve_shape.h"
+#include "tmop/recipes/laplace.h"
+#include "tmop/recipes/preserve.h"
+#include "tmop/recipes/size_adapt.h"
 #include "tmop/recipes/untangle.h"
 
 DEFINE_string(input, "", "Input mesh (.msh .vtk .vtu .mesh .obj .off .ply .stl).");
@@ -27,7 +33,10 @@ DEFINE_string(output, "", "Output mesh; format by extension. Written only on suc
 DEFINE_string(recipe, "auto",
               "auto: untangle if anything is inverted, then improve shape; "
               "shape: shape improvement with a barrier metric (the input must be valid); "
-              "untangle: untangle only.");
+              "untangle: untangle only; surface: shape improvement of a surface mesh on its "
+              "geometry (--geometry); equal_edge: equal edge lengths keeping shapes; "
+              "size_adapt: shapes with the local (or --size_field) size; preserve: follow a "
+              "moved boundary (--moved); laplace: smart Laplacian baseline.");
 DEFINE_bool(write_on_failure, false,
             "When untangling fails, still write the best mesh reached to --output.");
 DEFINE_string(metric, "", "Metric name (default: the recipe's); see --list_metrics.");
@@ -49,7 +58,19 @@ DEFINE_double(max_seconds, 1e9, "Wall-clock limit per stage, seconds.");
 DEFINE_int32(threads, 0, "Threads for evaluation and linear algebra (0 = all cores).");
 DEFINE_string(report, "", "Write a JSON report of the run to this file.");
 DEFINE_bool(binary, false, "Write binary output where the format has a binary form.");
-DEFINE_string(boundary, "fixed", "Boundary vertices: fixed (sliding comes with geometry).");
+DEFINE_string(boundary, "fixed",
+              "Boundary vertices: fixed, or slide (on their curves and surfaces; corners and "
+              "feature edges are kept). Surface meshes always slide on their surface.");
+DEFINE_string(geometry, "",
+              "Geometry to slide on: sphere:cx,cy,cz,r / plane:px,py,pz,nx,ny,nz / "
+              "cylinder:px,py,pz,dx,dy,dz,r / a surface file (.stl .obj .off .ply). Default: "
+              "the input's own boundary.");
+DEFINE_double(feature_angle, 30, "Boundary edges sharper than this (degrees) are features.");
+DEFINE_string(moved, "",
+              "Recipe preserve: the mesh with its boundary moved (same vertices and cells as "
+              "--input); the interior follows, keeping the input's element shapes and sizes.");
+DEFINE_double(shape_guard_weight, 1.0, "Recipe equal_edge: weight of the shape guard term.");
+DEFINE_int32(max_sweeps, 100, "Recipe laplace: maximum Gauss-Seidel sweeps.");
 DEFINE_bool(verbose, false, "Print a progress line per solver iteration.");
 
 namespace {
@@ -97,10 +118,17 @@ int main(int argc, char** argv) {
   }
   if (FLAGS_input.empty() || FLAGS_output.empty())
     return fail(2, "--input and --output are required (see --help)");
-  if (FLAGS_recipe != "auto" && FLAGS_recipe != "shape" && FLAGS_recipe != "untangle")
-    return fail(2, "unknown --recipe '" + FLAGS_recipe + "' (known: auto, shape, untangle)");
-  if (FLAGS_boundary != "fixed")
-    return fail(2, "--boundary=" + FLAGS_boundary + " is not available yet (only fixed)");
+  const std::string recipes[] = {"auto",       "shape",      "untangle", "surface",
+                                 "equal_edge", "size_adapt", "preserve", "laplace"};
+  if (std::find(std::begin(recipes), std::end(recipes), FLAGS_recipe) == std::end(recipes))
+    return fail(2, "unknown --recipe '" + FLAGS_recipe +
+                       "' (known: auto, shape, untangle, surface, equal_edge, size_adapt, "
+                       "preserve, laplace)");
+  if (FLAGS_boundary != "fixed" && FLAGS_boundary != "slide")
+    return fail(2, "--boundary must be fixed or slide, not '" + FLAGS_boundary + "'");
+  const bool slide = FLAGS_boundary == "slide" || FLAGS_recipe == "surface";
+  if (FLAGS_recipe == "preserve" && FLAGS_moved.empty())
+    return fail(2, "--recipe=preserve needs --moved=FILE (the mesh with its boundary moved)");
 
   ShapeOptions opt;
   opt.metric = FLAGS_metric;
@@ -119,6 +147,9 @@ int main(int argc, char** argv) {
   opt.solver.max_seconds = FLAGS_max_seconds;
   opt.solver.threads = FLAGS_threads;
   opt.solver.verbose = FLAGS_verbose;
+  opt.slide = slide;
+  opt.boundary.geometry = FLAGS_geometry;
+  opt.boundary.feature_angle_deg = FLAGS_feature_angle;
 
   Mesh mesh;
   Status s = read_mesh(FLAGS_input, &mesh);
@@ -146,17 +177,66 @@ int main(int argc, char** argv) {
     if (opt.target.reference) reorient(&reference);
   }
 
+  Mesh moved;
+  if (!FLAGS_moved.empty()) {
+    s = read_mesh(FLAGS_moved, &moved);
+    if (!s.ok()) return fail(2, s.message());
+    if (flipped) reorient(&moved);
+  }
+  if (slide && FLAGS_recipe != "auto" && FLAGS_recipe != "shape" && FLAGS_recipe != "untangle" &&
+      FLAGS_recipe != "surface")
+    return fail(2, "--boundary=slide is not available for recipe " + FLAGS_recipe);
+
   RecipeResult result;
   const IterationRecord before = measure_mesh(mesh, opt.rule);
   const int elements = mesh.num_elements();
   print_measure("before:", before, elements);
   bool write_anyway = false;
+  if ((FLAGS_recipe == "shape" || FLAGS_recipe == "equal_edge" || FLAGS_recipe == "size_adapt" ||
+       FLAGS_recipe == "laplace") &&
+      before.inverted > 0)
+    return fail(1, FLAGS_input + ": " + std::to_string(before.inverted) +
+                       " inverted elements: recipe " + FLAGS_recipe +
+                       " needs a valid mesh (use --recipe=auto or untangle)");
   if (FLAGS_recipe == "shape") {
-    if (before.inverted > 0)
-      return fail(1, FLAGS_input + ": " + std::to_string(before.inverted) +
-                         " inverted elements: recipe shape needs a valid mesh (use --recipe=auto "
-                         "or untangle)");
     s = improve_shape(&mesh, opt, &result);
+  } else if (FLAGS_recipe == "equal_edge") {
+    EqualEdgeOptions e;
+    if (!FLAGS_metric.empty()) e.metric = FLAGS_metric;
+    e.shape_guard_weight = FLAGS_shape_guard_weight;
+    if (FLAGS_sample_points != "default") e.rule = opt.rule;
+    e.solver = opt.solver;
+    s = equal_edge(&mesh, e, &result);
+  } else if (FLAGS_recipe == "size_adapt") {
+    SizeAdaptOptions a;
+    a.size_field = FLAGS_size_field;
+    if (!FLAGS_metric.empty()) a.metric = FLAGS_metric;
+    a.power = FLAGS_power;
+    a.rule = opt.rule;
+    a.solver = opt.solver;
+    s = size_adapt(&mesh, a, &result);
+  } else if (FLAGS_recipe == "preserve") {
+    PreserveOptions p;
+    p.moved = &moved;
+    if (!FLAGS_metric.empty()) p.metric = FLAGS_metric;
+    p.rule = opt.rule;
+    p.solver = opt.solver;
+    s = preserve(&mesh, p, &result);
+  } else if (FLAGS_recipe == "laplace") {
+    LaplaceOptions l;
+    l.max_sweeps = FLAGS_max_sweeps;
+    s = laplace(&mesh, l, &result);
+  } else if (FLAGS_recipe == "surface") {
+    if (!is_surface_mesh(mesh))
+      return fail(2, FLAGS_input + ": recipe surface needs a surface mesh (2D cells in 3D)");
+    UntangleOptions u;
+    u.rule = opt.rule;
+    u.solver = opt.solver;
+    u.slide = true;
+    u.boundary = opt.boundary;
+    u.shape = opt;
+    s = untangle(&mesh, u, &result);
+    result.recipe = "surface";
   } else {
     UntangleOptions u;
     u.target = opt.target;  // untangle toward the reference when one is given
@@ -164,6 +244,8 @@ int main(int argc, char** argv) {
     u.rule = opt.rule;
     u.solver = opt.solver;
     u.improve_shape_after = FLAGS_recipe == "auto";
+    u.slide = opt.slide;
+    u.boundary = opt.boundary;
     u.shape = opt;
     s = untangle(&mesh, u, &result);
     write_anyway = !s.ok() && FLAGS_write_on_failure && !result.stages.empty();

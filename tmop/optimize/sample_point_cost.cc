@@ -4,6 +4,9 @@
 
 namespace tmop {
 
+// Surface cells have at most 9 nodes (quad9).
+constexpr int kMaxSurfaceNodes = 9;
+
 SamplePointCost::SamplePointCost(int num_nodes, int dim, int num_terms,
                                  const SamplePointTerm* terms)
     : num_nodes_(num_nodes), dim_(dim), num_terms_(num_terms) {
@@ -16,9 +19,27 @@ SamplePointCost::SamplePointCost(int num_nodes, int dim, int num_terms,
   mutable_parameter_block_sizes()->assign(num_nodes, dim);
 }
 
-bool SamplePointCost::Evaluate(double const* const* x, double* residuals,
+void SamplePointCost::set_surface_frame(const double* F) {
+  frame_ = F;
+  mutable_parameter_block_sizes()->assign(num_nodes_, 3);
+}
+
+bool SamplePointCost::Evaluate(double const* const* x_in, double* residuals,
                                double** jacobians) const {
   const int d = dim_, dd = d * d, n = num_nodes_;
+  // Surface cells: work on the tangent coordinates y_i = F^T x_i.
+  double y[kMaxSurfaceNodes * 2];
+  const double* yp[kMaxSurfaceNodes];
+  double const* const* x = x_in;
+  if (frame_) {
+    for (int i = 0; i < n; ++i) {
+      for (int a = 0; a < 2; ++a)
+        y[2 * i + a] =
+            frame_[a] * x_in[i][0] + frame_[2 + a] * x_in[i][1] + frame_[4 + a] * x_in[i][2];
+      yp[i] = y + 2 * i;
+    }
+    x = yp;
+  }
   const int m_total = num_residuals();
   int row = 0;
   for (int t = 0; t < num_terms_; ++t) {
@@ -44,11 +65,18 @@ bool SamplePointCost::Evaluate(double const* const* x, double* residuals,
         const double* g = G + i * d;
         for (int k = 0; k < m; ++k) {
           const double* drk = dr + k * dd;
-          double* Jrow = J + (row + k) * d;
+          double v[3];
           for (int a = 0; a < d; ++a) {
-            double v = 0;
-            for (int b = 0; b < d; ++b) v += drk[a * d + b] * g[b];
-            Jrow[a] = s * v;
+            v[a] = 0;
+            for (int b = 0; b < d; ++b) v[a] += drk[a * d + b] * g[b];
+          }
+          if (frame_) {  // d/dx_c = sum_a d/dy_a F_ca
+            double* Jrow = J + (row + k) * 3;
+            for (int c = 0; c < 3; ++c)
+              Jrow[c] = s * (frame_[2 * c] * v[0] + frame_[2 * c + 1] * v[1]);
+          } else {
+            double* Jrow = J + (row + k) * d;
+            for (int a = 0; a < d; ++a) Jrow[a] = s * v[a];
           }
         }
       }
@@ -61,8 +89,20 @@ bool SamplePointCost::Evaluate(double const* const* x, double* residuals,
 
 void SamplePointCost::set_weight_multiplier(double m) { sqrt_multiplier_ = std::sqrt(m); }
 
-double SamplePointCost::value(double const* const* x) const {
+double SamplePointCost::value(double const* const* x_in) const {
   const int d = dim_, n = num_nodes_;
+  double y[kMaxSurfaceNodes * 2];
+  const double* yp[kMaxSurfaceNodes];
+  double const* const* x = x_in;
+  if (frame_) {
+    for (int i = 0; i < n; ++i) {
+      for (int a = 0; a < 2; ++a)
+        y[2 * i + a] =
+            frame_[a] * x_in[i][0] + frame_[2 + a] * x_in[i][1] + frame_[4 + a] * x_in[i][2];
+      yp[i] = y + 2 * i;
+    }
+    x = yp;
+  }
   double sum = 0;
   for (int t = 0; t < num_terms_; ++t) {
     const SamplePointTerm& term = terms_[t];

@@ -1,5 +1,6 @@
 // tmop/optimize/sample_point_cost.h
-// The Ceres residual block of one sample point: for each metric term t,
+// The Ceres residual block of one sample point (surface cells: see set_surface_frame): for each
+// metric term t,
 //   T_t = A W_t^-1 = sum_i x_i G_ti^T,  G_ti = W_t^-T grad N_i(xi)   (d-vectors, precomputed),
 //   r_t = sqrt(c_t) * metric_t.residuals(T_t),
 // stacked. Parameter blocks are the cell's node coordinates (d doubles each, in the mesh's own
@@ -27,6 +28,10 @@ struct SamplePointTerm {
 class SamplePointCost final : public ceres::CostFunction {
  public:
   SamplePointCost(int num_nodes, int dim, int num_terms, const SamplePointTerm* terms);
+  // A surface cell (2D cell in 3D space): parameter blocks have 3 coordinates and
+  // T = F^T A W^-1 with F the 3 x 2 tangent frame (row-major, columns t1, t2, t1 x t2 = the
+  // geometry's normal), held fixed during a solve (exact derivatives for that F). Not owned.
+  void set_surface_frame(const double* F);
   bool Evaluate(double const* const* x, double* residuals, double** jacobians) const override;
 
   // Multiplies every term's weight by m >= 0 (the power-mean reweighting of stage.cc).
@@ -39,6 +44,7 @@ class SamplePointCost final : public ceres::CostFunction {
  private:
   int num_nodes_;
   int dim_;
+  const double* frame_ = nullptr;
   int num_terms_;
   SamplePointTerm terms_[kMaxTerms];
   double sqrt_multiplier_ = 1.0;

@@ -11,11 +11,12 @@
 #include <limits>
 #include <thread>
 
+#include "tmop/element/ideal_element.h"
 #include "tmop/element/shape.h"
+#include "tmop/geometry/boundary_constraints.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/metric/untangle.h"
 #include "tmop/optimize/sample_point_cost.h"
-#include "tmop/element/ideal_element.h"
 
 namespace tmop {
 namespace {
@@ -58,27 +59,89 @@ void make_G(int n, int d, const double* grad, const double* Winv, double* G) {
     }
 }
 
+// T = F^T X G: F (space_dim x d, row-major) is the tangent frame of a surface cell, or null
+// when space_dim == d.
 void compute_T(int n, int d, const Mesh& mesh, const std::int32_t* nodes, const double* G,
-               double* T) {
+               double* T, const double* F = nullptr) {
   for (int k = 0; k < d * d; ++k) T[k] = 0;
   for (int i = 0; i < n; ++i) {
     const double* x = mesh.vertex(nodes[i]);
+    double y[3];
+    if (F) {
+      for (int a = 0; a < d; ++a) {
+        y[a] = 0;
+        for (int c = 0; c < mesh.space_dim; ++c) y[a] += F[c * d + a] * x[c];
+      }
+      x = y;
+    }
     for (int a = 0; a < d; ++a)
       for (int b = 0; b < d; ++b) T[a * d + b] += x[a] * G[i * d + b];
   }
 }
 
+// Per-cell tangent frames of a surface mesh (2D cells in 3D): 6 values per cell, the columns t1,
+// t2 of an orthonormal basis with t1 x t2 = n. Empty for planar and volume meshes.
+struct Frames {
+  std::vector<double> F;
+  const double* cell(int c) const { return F.empty() ? nullptr : F.data() + 6 * c; }
+};
+
+void frame_from_normal(const double* n_in, double* F) {
+  double n[3] = {n_in[0], n_in[1], n_in[2]};
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (double& v : n) v /= len;
+  // t1: the coordinate axis least aligned with n, made orthogonal to it.
+  int k = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::abs(n[a]) < std::abs(n[k])) k = a;
+  double t1[3] = {0, 0, 0};
+  t1[k] = 1;
+  const double dot = t1[0] * n[0] + t1[1] * n[1] + t1[2] * n[2];
+  for (int a = 0; a < 3; ++a) t1[a] -= dot * n[a];
+  const double l1 = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
+  for (double& v : t1) v /= l1;
+  const double t2[3] = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2],
+                        n[0] * t1[1] - n[1] * t1[0]};
+  for (int c = 0; c < 3; ++c) {
+    F[c * 2 + 0] = t1[c];
+    F[c * 2 + 1] = t2[c];
+  }
+}
+
+// Frames from each cell's own corner-polygon (Newell) normal: a surface mesh measured in its
+// cells' own planes (no geometry: folds are not visible this way).
+Frames own_frames(const Mesh& mesh) {
+  Frames f;
+  if (mesh.space_dim != 3 || mesh.dim() != 2) return f;
+  f.F.assign(6 * mesh.num_cells(), 0);
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (cell_dim(mesh.cell_type(c)) != 2) continue;
+    const int k = cell_info(mesh.cell_type(c)).num_corners;
+    double n[3] = {0, 0, 0};
+    for (int i = 0; i < k; ++i) {
+      const double* a = mesh.vertex(mesh.cell(c)[i]);
+      const double* b = mesh.vertex(mesh.cell(c)[(i + 1) % k]);
+      n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+      n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+      n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    if (n[0] == 0 && n[1] == 0 && n[2] == 0) n[2] = 1;
+    frame_from_normal(n, f.F.data() + 6 * c);
+  }
+  return f;
+}
+
 // min det T over the sample points of term 0, and the cells where it is <= 0.
 double min_target_det(const Mesh& mesh, const std::vector<std::int32_t>& point_cell,
                       const std::vector<double>& G, const std::vector<std::int64_t>& g_offset,
-                      std::vector<int>* bad) {
+                      std::vector<int>* bad, const Frames& frames) {
   const int d = mesh.dim();
   double worst = std::numeric_limits<double>::infinity();
   if (bad) bad->clear();
   for (std::size_t p = 0; p < point_cell.size(); ++p) {
     const int c = point_cell[p];
     double T[9];
-    compute_T(mesh.cell_size(c), d, mesh, mesh.cell(c), G.data() + g_offset[p], T);
+    compute_T(mesh.cell_size(c), d, mesh, mesh.cell(c), G.data() + g_offset[p], T, frames.cell(c));
     const double det = det_d(T, d);
     worst = std::min(worst, det);
     if (bad && !(det > 0) && (bad->empty() || bad->back() != c)) bad->push_back(c);
@@ -117,7 +180,8 @@ struct IdealTable {
   }
 };
 
-IterationRecord measure(const Mesh& mesh, SampleRule rule, const IdealTable& table) {
+IterationRecord measure(const Mesh& mesh, SampleRule rule, const IdealTable& table,
+                        const Frames& frames) {
   IterationRecord rec;
   const int d = mesh.dim();
   rec.min_quality = std::numeric_limits<double>::infinity();
@@ -129,7 +193,7 @@ IterationRecord measure(const Mesh& mesh, SampleRule rule, const IdealTable& tab
     bool inverted = false;
     for (std::size_t off = 0; off < G.size(); off += n * d) {
       double T[9];
-      compute_T(n, d, mesh, mesh.cell(c), G.data() + off, T);
+      compute_T(n, d, mesh, mesh.cell(c), G.data() + off, T, frames.cell(c));
       const double q = shape_quality(T, d);
       if (!(det_d(T, d) > 0)) inverted = true;
       rec.min_quality = std::min(rec.min_quality, q);
@@ -189,12 +253,13 @@ double cell_edge_lengths(const Mesh& m, std::vector<double>* shortest) {
 
 class StageCallback final : public ceres::IterationCallback {
  public:
-  StageCallback(Mesh* mesh, const StageSpec& spec, const IdealTable& table,
+  StageCallback(Mesh* mesh, const StageSpec& spec, const IdealTable& table, const Frames& frames,
                 const std::vector<int>& free_vertices, const std::vector<double>& shortest,
                 int num_elements, StageResult* result)
       : mesh_(mesh),
         spec_(spec),
         table_(table),
+        frames_(frames),
         free_(free_vertices),
         shortest_(shortest),
         num_elements_(num_elements),
@@ -205,7 +270,7 @@ class StageCallback final : public ceres::IterationCallback {
   }
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    IterationRecord rec = measure(*mesh_, spec_.rule, table_);
+    IterationRecord rec = measure(*mesh_, spec_.rule, table_, frames_);
     rec.iteration = s.iteration == 0 && !result_->history.empty()
                         ? result_->history.back().iteration  // a reweighting round restarts
                         : (result_->history.empty() ? 0 : result_->history.back().iteration + 1);
@@ -261,6 +326,7 @@ class StageCallback final : public ceres::IterationCallback {
   Mesh* mesh_;
   const StageSpec& spec_;
   const IdealTable& table_;
+  const Frames& frames_;
   const std::vector<int>& free_;
   const std::vector<double>& shortest_;
   int num_elements_;
@@ -276,7 +342,8 @@ double exact_objective(const Mesh& mesh, const StageSpec& spec,
                        const std::vector<std::vector<double>>& G,
                        const std::vector<std::int64_t>& g_offset,
                        const std::vector<std::int32_t>& cells,
-                       const std::vector<double>& point_weight, int num_elements) {
+                       const std::vector<double>& point_weight, int num_elements,
+                       const Frames& frames) {
   const int d = mesh.dim();
   double sum = 0;
   for (std::size_t p = 0; p < cells.size(); ++p) {
@@ -286,7 +353,7 @@ double exact_objective(const Mesh& mesh, const StageSpec& spec,
       const double c_t = spec.terms[t].weights.empty() ? 1.0 : spec.terms[t].weights[p];
       if (c_t == 0) continue;
       double T[9];
-      compute_T(n, d, mesh, mesh.cell(c), G[t].data() + g_offset[p], T);
+      compute_T(n, d, mesh, mesh.cell(c), G[t].data() + g_offset[p], T, frames.cell(c));
       sum += point_weight[p] * c_t * spec.terms[t].metric->value(T);
     }
   }
@@ -325,11 +392,35 @@ bool linear_solver_from_name(const std::string& name, SolverOptions::LinearSolve
   return true;
 }
 
+CoordinateFrame normalizing_frame(const Mesh& mesh) {
+  CoordinateFrame f;
+  const int nv = mesh.num_vertices();
+  for (int v = 0; v < nv; ++v)
+    for (int a = 0; a < mesh.space_dim; ++a) f.centre[a] += mesh.vertex(v)[a] / nv;
+  std::vector<double> shortest;
+  f.length = cell_edge_lengths(mesh, &shortest);
+  return f;
+}
+
+void to_frame(const CoordinateFrame& frame, Mesh* mesh) {
+  Normalization n;
+  for (int a = 0; a < 3; ++a) n.centre[a] = frame.centre[a];
+  n.length = frame.length;
+  n.apply(mesh);
+}
+
+void from_frame(const CoordinateFrame& frame, Mesh* mesh) {
+  Normalization n;
+  for (int a = 0; a < 3; ++a) n.centre[a] = frame.centre[a];
+  n.length = frame.length;
+  n.undo(mesh);
+}
+
 IterationRecord measure_mesh(const Mesh& mesh, SampleRule rule) {
   const int d = mesh.dim();
-  if (d < 2 || mesh.space_dim != d) return IterationRecord();
+  if (d < 2 || (mesh.space_dim != d && d != 2)) return IterationRecord();
   IdealTable table(rule, d);
-  return measure(mesh, rule, table);
+  return measure(mesh, rule, table, own_frames(mesh));
 }
 
 Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
@@ -338,8 +429,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   const auto start = std::chrono::steady_clock::now();
   const int d = mesh->dim();
   if (d < 2) return Status::Failure("the mesh has no 2D or 3D elements to optimize");
-  if (mesh->space_dim != d)
+  const bool surface = mesh->space_dim != d;
+  if (surface && (d != 2 || !spec.boundary))
     return Status::Failure("surface meshes (2D cells in 3D) need a geometry (recipe surface)");
+  if (spec.boundary && spec.boundary->num_vertices() != mesh->num_vertices())
+    return Status::Failure("boundary constraints were built for another mesh");
   if (spec.terms.empty() || spec.terms.size() > static_cast<std::size_t>(kMaxTerms))
     return Status::Failure("a stage needs 1 or 2 metric terms");
   for (const TermSpec& t : spec.terms) {
@@ -354,6 +448,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
 
   // Fixed vertices: given, or the boundary.
   std::vector<char> fixed = spec.fixed;
+  if (spec.boundary) {
+    const std::vector<char> corners = spec.boundary->fixed_flags();
+    if (fixed.empty()) fixed.assign(mesh->num_vertices(), 0);
+    for (std::size_t v = 0; v < fixed.size() && v < corners.size(); ++v) fixed[v] |= corners[v];
+  }
   if (fixed.empty()) fixed = boundary_vertex_mask(*mesh);
   if (static_cast<int>(fixed.size()) != mesh->num_vertices())
     return Status::Failure("fixed-vertex flags: one per vertex expected");
@@ -383,14 +482,37 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   const std::vector<double> original = mesh->coords;
   Normalization norm;
   {
-    std::vector<double> shortest;
-    const int nv = mesh->num_vertices();
-    for (int v = 0; v < nv; ++v)
-      for (int a = 0; a < d; ++a) norm.centre[a] += mesh->vertex(v)[a] / nv;
-    norm.length = cell_edge_lengths(*mesh, &shortest);
+    const CoordinateFrame f = spec.boundary ? spec.frame : normalizing_frame(*mesh);
+    for (int a = 0; a < 3; ++a) norm.centre[a] = f.centre[a];
+    norm.length = f.length;
     if (!(norm.length > 0)) return Status::Failure("the mesh has no edge of positive length");
   }
   norm.apply(mesh);
+  // Surface meshes: per-cell tangent frames from the geometry's normals at the cell's corners.
+  Frames frames;
+  auto update_frames = [&]() {
+    for (int c = 0; c < mesh->num_cells(); ++c) {
+      if (!mesh->is_element(c, d)) continue;
+      const int k = cell_info(mesh->cell_type(c)).num_corners;
+      double n[3] = {0, 0, 0};
+      for (int i = 0; i < k; ++i) {
+        const int v = mesh->cell(c)[i];
+        double nv[3];
+        if (spec.boundary->normal(v, mesh->vertex(v), nv))
+          for (int a = 0; a < 3; ++a) n[a] += nv[a];
+      }
+      if (n[0] == 0 && n[1] == 0 && n[2] == 0) {
+        const Frames own = own_frames(*mesh);  // no geometry normal here: the cell's own plane
+        std::copy(own.cell(c), own.cell(c) + 6, frames.F.data() + 6 * c);
+        continue;
+      }
+      frame_from_normal(n, frames.F.data() + 6 * c);
+    }
+  };
+  if (surface) {
+    frames.F.assign(6 * mesh->num_cells(), 0);
+    update_frames();
+  }
   auto fail = [&](const std::string& message) {
     mesh->coords = original;
     return Status::Failure(message);
@@ -438,16 +560,16 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   }
 
   IdealTable table(spec.rule, d);
-  const IterationRecord before = measure(*mesh, spec.rule, table);
+  const IterationRecord before = measure(*mesh, spec.rule, table, frames);
   result->inverted_before = before.inverted;
   result->min_quality_before = before.min_quality;
   bool barrier = false;
   for (const TermSpec& t : spec.terms) barrier |= t.metric->barrier();
   result->initial_objective =
-      exact_objective(*mesh, spec, G, g_offset, point_cell, point_weight, num_elements);
+      exact_objective(*mesh, spec, G, g_offset, point_cell, point_weight, num_elements, frames);
 
   std::vector<int> bad;
-  result->min_det_before = min_target_det(*mesh, point_cell, G[0], g_offset, &bad);
+  result->min_det_before = min_target_det(*mesh, point_cell, G[0], g_offset, &bad, frames);
   if (barrier && !bad.empty())
     return fail("barrier metric on an inverted mesh (untangle first): inverted cells " +
                 list_cells(bad));
@@ -465,7 +587,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       for (int i = 0; i < mesh->cell_size(c); ++i) all_fixed &= fixed[mesh->cell(c)[i]] != 0;
       if (!all_fixed) continue;
       double T[9];
-      compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), G[0].data() + g_offset[p], T);
+      compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), G[0].data() + g_offset[p], T,
+                frames.cell(c));
       if (!(det_d(T, d) > 0)) stuck.push_back(c);
     }
     if (!stuck.empty())
@@ -477,6 +600,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   popts.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   popts.enable_fast_removal = false;
   popts.disable_all_safety_checks = true;
+  popts.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;  // BoundaryConstraints owns them
   ceres::Problem problem(popts);
   std::deque<SamplePointCost> costs;
   std::vector<int> cost_point;  // sample point of each cost
@@ -503,6 +627,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       ++nt;
     }
     costs.emplace_back(n, d, nt, terms);
+    if (surface) costs.back().set_surface_frame(frames.cell(c));
     cost_point.push_back(static_cast<int>(p));
     blocks.clear();
     for (int i = 0; i < n; ++i) {
@@ -514,10 +639,15 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   std::vector<int> free_vertices;
   for (int v = 0; v < mesh->num_vertices(); ++v) {
     if (!in_problem[v]) continue;
-    if (fixed[v])
+    if (fixed[v]) {
       problem.SetParameterBlockConstant(mesh->vertex(v));
-    else
-      free_vertices.push_back(v);
+      continue;
+    }
+    free_vertices.push_back(v);
+    // Ceres takes a non-const pointer but only calls const methods of a manifold.
+    if (spec.boundary && spec.boundary->manifold(v))
+      problem.SetManifold(mesh->vertex(v),
+                          const_cast<ceres::Manifold*>(spec.boundary->manifold(v)));
   }
   result->num_free_vertices = static_cast<int>(free_vertices.size());
 
@@ -561,7 +691,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   so.logging_type = ceres::SILENT;
   so.minimizer_progress_to_stdout = false;
   so.update_state_every_iteration = true;
-  StageCallback callback(mesh, spec, table, free_vertices, shortest, num_elements, result);
+  StageCallback callback(mesh, spec, table, frames, free_vertices, shortest, num_elements, result);
   so.callbacks.push_back(&callback);
 
   ceres::Solver::Summary summary;
@@ -573,67 +703,73 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     result->iterations += static_cast<int>(summary.iterations.size()) - 1;
     return summary.termination_type != ceres::FAILURE;
   };
-  if (spec.untangle) {
-    // eps schedule: after each solve, sigma = max(1 - E_final / E_initial, 0.1) (the relative
-    // decrease the solve achieved),
-    // mu = (1 - sigma) chi(min det, eps); eps = 2 sqrt(mu (mu - min det)) while min det < mu.
-    std::vector<std::unique_ptr<UntangleMetric>> metrics;  // alive while costs point to them
-    const double theta = untangle_metric->theta();
-    double eps = untangle_metric->eps();
-    so.max_num_iterations = spec.untangle_round_iterations;
-    const int max_rounds = result->min_det_before > 0 ? 0 : spec.untangle_max_rounds;
-    for (int round = 0; round < max_rounds; ++round) {
-      metrics.push_back(std::make_unique<UntangleMetric>(d, eps, theta));
-      for (SamplePointCost& cost : costs) cost.set_metric(0, metrics.back().get());
-      if (!solve()) return fail("solver failed: " + summary.message);
-      result->final_eps = eps;
-      const double det_min = min_target_det(*mesh, point_cell, G[0], g_offset, nullptr);
-      if (det_min > 0) break;
-      const double energy = summary.final_cost;
-      const double sigma = std::max(1 - energy / summary.initial_cost, 0.1);
-      const double mu = (1 - sigma) * UntangleMetric::chi(det_min, eps);
-      eps = det_min < mu ? 2 * std::sqrt(mu * (mu - det_min)) : 1e-12;
-      if (std::getenv("TMOP_DEBUG_EPS"))
-        std::fprintf(stderr, "round %d E %g det_min %g mu %g eps %g\n", round, energy, det_min, mu,
-                     eps);
-    }
-  } else {
-    const int rounds = spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1;
-    std::vector<const double*> xs(kMaxCellNodes);
-    for (int round = 0; round < rounds; ++round) {
-      if (round > 0) {
-        // Reweight: multiplier (v_k / mean v)^(p-1) from the current per-point values.
-        std::vector<double> v(costs.size());
-        double mean = 0;
-        for (std::size_t k = 0; k < costs.size(); ++k) {
-          const int c = point_cell[cost_point[k]];
-          for (int i = 0; i < mesh->cell_size(c); ++i) xs[i] = mesh->vertex(mesh->cell(c)[i]);
-          costs[k].set_weight_multiplier(1.0);
-          v[k] = std::max(0.0, costs[k].value(xs.data()));
-          mean += v[k] / costs.size();
-        }
-        if (!(mean > 0)) break;
-        for (std::size_t k = 0; k < costs.size(); ++k)
-          costs[k].set_weight_multiplier(std::pow(1 + v[k] / mean, spec.power - 1));
+  const int frame_rounds = surface ? std::max(1, spec.surface_frame_rounds) : 1;
+  for (int frame_round = 0; frame_round < frame_rounds; ++frame_round) {
+    if (frame_round > 0) update_frames();
+    if (spec.untangle) {
+      // eps schedule: after each solve, sigma = max(1 - E_final / E_initial, 0.1) (the relative
+      // decrease the solve achieved),
+      // mu = (1 - sigma) chi(min det, eps); eps = 2 sqrt(mu (mu - min det)) while min det < mu.
+      std::vector<std::unique_ptr<UntangleMetric>> metrics;  // alive while costs point to them
+      const double theta = untangle_metric->theta();
+      double eps = untangle_metric->eps();
+      so.max_num_iterations = spec.untangle_round_iterations;
+      const int max_rounds = min_target_det(*mesh, point_cell, G[0], g_offset, nullptr, frames) > 0
+                                 ? 0
+                                 : spec.untangle_max_rounds;
+      for (int round = 0; round < max_rounds; ++round) {
+        metrics.push_back(std::make_unique<UntangleMetric>(d, eps, theta));
+        for (SamplePointCost& cost : costs) cost.set_metric(0, metrics.back().get());
+        if (!solve()) return fail("solver failed: " + summary.message);
+        result->final_eps = eps;
+        const double det_min = min_target_det(*mesh, point_cell, G[0], g_offset, nullptr, frames);
+        if (det_min > 0) break;
+        const double energy = summary.final_cost;
+        const double sigma = std::max(1 - energy / summary.initial_cost, 0.1);
+        const double mu = (1 - sigma) * UntangleMetric::chi(det_min, eps);
+        eps = det_min < mu ? 2 * std::sqrt(mu * (mu - det_min)) : 1e-12;
+        if (std::getenv("TMOP_DEBUG_EPS"))
+          std::fprintf(stderr, "round %d E %g det_min %g mu %g eps %g\n", round, energy, det_min,
+                       mu, eps);
       }
-      // Rounds before the last only steer the weights: a loose solve is enough.
-      const bool last = round + 1 == rounds;
-      so.max_num_iterations =
-          last ? spec.solver.max_iterations : std::min(spec.solver.max_iterations, 20);
-      so.function_tolerance =
-          last ? spec.solver.function_tolerance : std::max(spec.solver.function_tolerance, 1e-4);
-      if (!solve()) return fail("solver failed: " + summary.message);
+    } else {
+      const int rounds = spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1;
+      std::vector<const double*> xs(kMaxCellNodes);
+      for (int round = 0; round < rounds; ++round) {
+        if (round > 0) {
+          // Reweight: multiplier (v_k / mean v)^(p-1) from the current per-point values.
+          std::vector<double> v(costs.size());
+          double mean = 0;
+          for (std::size_t k = 0; k < costs.size(); ++k) {
+            const int c = point_cell[cost_point[k]];
+            for (int i = 0; i < mesh->cell_size(c); ++i) xs[i] = mesh->vertex(mesh->cell(c)[i]);
+            costs[k].set_weight_multiplier(1.0);
+            v[k] = std::max(0.0, costs[k].value(xs.data()));
+            mean += v[k] / costs.size();
+          }
+          if (!(mean > 0)) break;
+          for (std::size_t k = 0; k < costs.size(); ++k)
+            costs[k].set_weight_multiplier(std::pow(1 + v[k] / mean, spec.power - 1));
+        }
+        // Rounds before the last only steer the weights: a loose solve is enough.
+        const bool last = round + 1 == rounds;
+        so.max_num_iterations =
+            last ? spec.solver.max_iterations : std::min(spec.solver.max_iterations, 20);
+        so.function_tolerance =
+            last ? spec.solver.function_tolerance : std::max(spec.solver.function_tolerance, 1e-4);
+        if (!solve()) return fail("solver failed: " + summary.message);
+      }
     }
   }
 
   // Ceres leaves the best parameters in place; the callback may have seen a later state.
-  const IterationRecord after = measure(*mesh, spec.rule, table);
+  const IterationRecord after = measure(*mesh, spec.rule, table, frames);
   result->min_det_after =
-      min_target_det(*mesh, point_cell, G[0], g_offset, &result->inverted_cells);
+      min_target_det(*mesh, point_cell, G[0], g_offset, &result->inverted_cells, frames);
   result->inverted_after = after.inverted;
   result->min_quality_after = after.min_quality;
   result->final_objective =
-      exact_objective(*mesh, spec, G, g_offset, point_cell, point_weight, num_elements);
+      exact_objective(*mesh, spec, G, g_offset, point_cell, point_weight, num_elements, frames);
   result->termination = callback.reason().empty() ? summary.message : callback.reason();
   norm.undo(mesh);
   // Mapping back is not bit-exact; vertices that were never free keep their input coordinates.

@@ -23,6 +23,19 @@
 
 namespace tmop {
 
+class BoundaryConstraints;  // geometry/boundary_constraints.h
+
+// The translation and scale a stage solves in: x' = (x - centre) / length.
+struct CoordinateFrame {
+  double centre[3] = {0, 0, 0};
+  double length = 1;
+};
+// Centroid of the vertices and mean element edge length: what a stage uses by default.
+CoordinateFrame normalizing_frame(const Mesh& mesh);
+// x' = (x - centre) / length for every vertex, and back.
+void to_frame(const CoordinateFrame& frame, Mesh* mesh);
+void from_frame(const CoordinateFrame& frame, Mesh* mesh);
+
 struct TermSpec {
   std::shared_ptr<const Metric> metric;  // dimension must equal the mesh's element dimension
   TargetSpec target;
@@ -38,8 +51,19 @@ struct StageSpec {
   // certificate of a quadratic cell failed). Their weights add to their cells' contributions.
   SampleSet extra_points;
   std::vector<TermSpec> terms;  // 1 or 2 terms
-  // Per-vertex flags (1 = fixed). Empty: every boundary vertex is fixed.
+  // Per-vertex flags (1 = fixed). Empty: every boundary vertex is fixed, unless `boundary` is
+  // given (then its corners are fixed and the other boundary vertices slide).
   std::vector<char> fixed;
+  // Sliding boundary vertices and surface geometry: the constraints must have been built on the
+  // mesh mapped by `frame` (so several stages share one geometry built from the input: no
+  // drift), and the stage then solves in that frame. Required for surface meshes (2D cells in
+  // 3D), whose Jacobians are reduced to 2 x 2 in the tangent frame of the geometry's normal so
+  // that a folded triangle has det T <= 0. Not owned. Null: nothing slides.
+  const BoundaryConstraints* boundary = nullptr;
+  CoordinateFrame frame;
+  // Surface meshes: the tangent frames are held fixed during a Ceres solve (exact derivatives
+  // for that frame) and refreshed at the new positions between solves, this many solves.
+  int surface_frame_rounds = 3;
   SolverOptions solver;
   // Power order p >= 1: weight the worst points up. Iteratively reweighted least squares: each
   // round solves the plain least-squares problem with fixed weights (1 + v_k / mean v)^(p-1),

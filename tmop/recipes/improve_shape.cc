@@ -32,6 +32,15 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
   const int d = mesh->dim();
   result->before = measure_mesh(*mesh, options.rule);
 
+  const RecipeGeometry* geometry = options.geometry;
+  RecipeGeometry own;
+  if (!geometry && (options.slide || is_surface_mesh(*mesh))) {
+    BoundaryOptions b = options.boundary;
+    b.slide = options.slide || b.slide;
+    Status s = build_recipe_geometry(*mesh, b, &own);
+    if (!s.ok()) return s;
+    geometry = &own;
+  }
   const std::vector<double> original = mesh->coords;
   double power = options.power;
   for (int attempt = 0; attempt < 3; ++attempt) {
@@ -42,6 +51,7 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
     stage.extra_points = options.extra_points;
     stage.fixed = options.fixed;
     stage.solver = options.solver;
+    if (geometry) geometry->apply(&stage);
     TermSpec term;
     term.metric = recipe_metric(options.metric, d, 1.0, &error);
     stage.power = power;

@@ -18,6 +18,7 @@
 #include "tmop/core/status.h"
 #include "tmop/mesh/mesh.h"
 #include "tmop/optimize/stage.h"
+#include "tmop/recipes/recipe_geometry.h"
 #include "tmop/recipes/recipe_result.h"
 
 namespace tmop {
@@ -33,7 +34,14 @@ struct ShapeOptions {
   double power = 1.0;
   // Never return a mesh whose worst element is worse than the input's.
   bool guard_worst = true;
-  std::vector<char> fixed;  // per-vertex flags; empty = boundary fixed
+  std::vector<char> fixed;  // per-vertex flags; empty = boundary fixed (or sliding, below)
+  // Boundary vertices slide on their curves and surfaces (corners stay fixed): the input's own
+  // boundary, or boundary.geometry. Surface meshes always slide on their surface.
+  bool slide = false;
+  BoundaryOptions boundary;
+  // A geometry already built for this mesh (e.g. by the untangle recipe before this stage);
+  // when set, slide/boundary are ignored. Not owned.
+  const RecipeGeometry* geometry = nullptr;
   SolverOptions solver;
 };
 

@@ -74,6 +74,15 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
 
+  const RecipeGeometry* geometry = options.geometry;
+  RecipeGeometry own;
+  if (!geometry && (options.slide || is_surface_mesh(*mesh))) {
+    BoundaryOptions b = options.boundary;
+    b.slide = options.slide || b.slide;
+    Status s = build_recipe_geometry(*mesh, b, &own);
+    if (!s.ok()) return s;
+    geometry = &own;
+  }
   SampleSet extra;
   std::vector<int> uncertified, proven_inverted;
   int with_certificate = 0;
@@ -88,6 +97,7 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
     stage.fixed = options.fixed;
     stage.solver = options.solver;
     stage.untangle = true;
+    if (geometry) geometry->apply(&stage);
     stage.untangle_max_rounds = options.max_rounds;
     stage.untangle_round_iterations = options.round_iterations;
     TermSpec term;
@@ -112,6 +122,7 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
       ShapeOptions shape = options.shape;
       shape.fixed = options.fixed;
       shape.extra_points = extra;
+      shape.geometry = geometry;
       RecipeResult shape_result;
       s = improve_shape(mesh, shape, &shape_result);
       if (!s.ok()) return s;

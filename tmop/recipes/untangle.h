@@ -40,7 +40,12 @@ struct UntangleOptions {
   // again, at most certify_rounds times. RecipeResult reports certified / uncertified cells.
   bool certify = true;
   int certify_rounds = 4;
-  std::vector<char> fixed;  // per-vertex flags; empty = boundary fixed
+  std::vector<char> fixed;  // per-vertex flags; empty = boundary fixed (or sliding, below)
+  // Boundary vertices slide on their geometry during untangling and shape improvement (one
+  // geometry built from the input serves both); surface meshes always do. See ShapeOptions.
+  bool slide = false;
+  BoundaryOptions boundary;
+  const RecipeGeometry* geometry = nullptr;
   SolverOptions solver;
 };
 

@@ -1,5 +1,6 @@
 #include "tmop/target/target.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -33,6 +34,33 @@ void gather(const Mesh& mesh, int c, double* x) {
     for (int a = 0; a < sd; ++a) x[i * sd + a] = mesh.vertex(nodes[i])[a];
 }
 
+// det of A for d x d, or the area / volume scale sqrt(det(A^T A)) of a 3 x 2 surface Jacobian.
+double measure_det(const double* A, int space_dim, int d) {
+  if (space_dim == d) return det(A, d);
+  double g11 = 0, g12 = 0, g22 = 0;
+  for (int c = 0; c < 3; ++c) {
+    g11 += A[c * 2] * A[c * 2];
+    g12 += A[c * 2] * A[c * 2 + 1];
+    g22 += A[c * 2 + 1] * A[c * 2 + 1];
+  }
+  return std::sqrt(std::max(0.0, g11 * g22 - g12 * g12));
+}
+
+// The 2 x 2 R of A = Q R (QR of a 3 x 2 surface Jacobian): the same lengths and angles as A in
+// the cell's own plane, so a reference target on a surface keeps its shape and size.
+void surface_reference(const double* A, double* W) {
+  double l1 = 0, dot = 0;
+  for (int c = 0; c < 3; ++c) {
+    l1 += A[c * 2] * A[c * 2];
+    dot += A[c * 2] * A[c * 2 + 1];
+  }
+  l1 = std::sqrt(l1);
+  W[0] = l1;
+  W[1] = l1 > 0 ? dot / l1 : 0;
+  W[2] = 0;
+  W[3] = l1 > 0 ? measure_det(A, 3, 2) / l1 : 0;
+}
+
 bool same_topology(const Mesh& a, const Mesh& b) {
   return a.num_vertices() == b.num_vertices() && a.space_dim == b.space_dim &&
          a.cell_types == b.cell_types && a.cell_nodes == b.cell_nodes;
@@ -63,7 +91,7 @@ double cell_equivalent_edge(const Mesh& mesh, int c) {
   double volume = 0;
   for (const SamplePoint& p : sample_points(t, SampleRule::kGauss)) {
     cell_jacobian(t, x, mesh.space_dim, p.xi, A);
-    volume += p.weight * det(A, d);
+    volume += p.weight * measure_det(A, mesh.space_dim, d);
   }
   volume *= reference_volume(t);
   const double h = std::pow(std::abs(volume) / ideal_volume(t), 1.0 / d);
@@ -89,8 +117,9 @@ Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec
                      std::vector<double>* W) {
   const int d = mesh.dim();
   if (d < 2) return Status::Failure("targets need a mesh of 2D or 3D elements");
-  if (mesh.space_dim != d)
-    return Status::Failure("targets for surface meshes (2D cells in 3D) need a geometry");
+  if (mesh.space_dim != d && d != 2)
+    return Status::Failure("targets: elements of dimension " + std::to_string(d) + " in " +
+                           std::to_string(mesh.space_dim) + "D space");
   const Mesh& ref = spec.reference ? *spec.reference : mesh;
   if (spec.type == TargetType::kReference && !same_topology(mesh, ref))
     return Status::Failure("reference mesh: its vertices and cells do not match the mesh's");
@@ -152,6 +181,11 @@ Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec
     double w[9];
     if (spec.type == TargetType::kReference) {
       cell_jacobian(t, x, ref.space_dim, xi, w);
+      if (ref.space_dim != d) {
+        double a[6];
+        std::copy(w, w + 6, a);
+        surface_reference(a, w);
+      }
       const double dw = det(w, d);
       if (!(std::abs(dw) > 0) || !std::isfinite(dw))
         return Status::Failure("cell " + std::to_string(c) +

@@ -1,0 +1,19 @@
+#include "tmop/recipes/recipe_geometry.h"
+
+namespace tmop {
+
+Status build_recipe_geometry(const Mesh& mesh, const BoundaryOptions& options,
+                             RecipeGeometry* out) {
+  out->frame = normalizing_frame(mesh);
+  if (!(out->frame.length > 0)) return Status::Failure("the mesh has no edge of positive length");
+  Mesh mapped = mesh;
+  to_frame(out->frame, &mapped);
+  BoundaryOptions opt = options;
+  for (int a = 0; a < 3; ++a) opt.geometry_frame.centre[a] = out->frame.centre[a];
+  opt.geometry_frame.length = out->frame.length;
+  return BoundaryConstraints::Build(mapped, opt, &out->constraints);
+}
+
+bool is_surface_mesh(const Mesh& mesh) { return mesh.dim() == 2 && mesh.space_dim == 3; }
+
+}  // namespace tmop

@@ -1,0 +1,40 @@
+// tmop/recipes/recipe_geometry.h
+// The boundary geometry of one recipe run, built once from the input mesh so that every stage
+// (untangle, then shape, ...) slides on the same curves and surfaces: rebuilding it from the
+// moved boundary between stages would let the boundary drift.
+//
+// The constraints are built on the mesh mapped into its normalising frame (optimize/stage.h),
+// the coordinates every stage solves in; user geometry strings ("sphere:0,0,0,1", a surface
+// file) are given in the mesh's own units and mapped the same way.
+#ifndef TMOP_RECIPES_RECIPE_GEOMETRY_H_
+#define TMOP_RECIPES_RECIPE_GEOMETRY_H_
+
+#include <memory>
+
+#include "tmop/core/status.h"
+#include "tmop/geometry/boundary_constraints.h"
+#include "tmop/mesh/mesh.h"
+#include "tmop/optimize/stage.h"
+
+namespace tmop {
+
+struct RecipeGeometry {
+  CoordinateFrame frame;
+  std::unique_ptr<BoundaryConstraints> constraints;
+  // Sets a stage's boundary and frame.
+  void apply(StageSpec* stage) const {
+    stage->boundary = constraints.get();
+    stage->frame = frame;
+  }
+};
+
+// Fails (one line) on a bad geometry string or file, or a mesh whose boundary cannot be
+// classified.
+Status build_recipe_geometry(const Mesh& mesh, const BoundaryOptions& options, RecipeGeometry* out);
+
+// True for a surface mesh (2D elements in 3D space): such meshes always need a geometry.
+bool is_surface_mesh(const Mesh& mesh);
+
+}  // namespace tmop
+
+#endif  // TMOP_RECIPES_RECIPE_GEOMETRY_H_
