@@ -75,7 +75,7 @@ DEFINE_double(max_seconds, 1e9, "Wall-clock cap per stage, seconds (shape, untan
 DEFINE_bool(then_shape, false, "untangle: run the shape stage after untangling (recipe auto).");
 DEFINE_string(linear_solver, "auto", "auto, cholesky or cgnr (SolverOptions::LinearSolver).");
 DEFINE_string(solver, "lm", "lm or dogleg.");
-DEFINE_int32(cholesky_max_free_coordinates, 60000,
+DEFINE_int32(cholesky_max_free_coordinates, 8000,
              "auto picks sparse Cholesky up to this many free coordinates.");
 DEFINE_bool(verbose, false, "Print the solver's progress lines.");
 DEFINE_string(output, "", "perturb: the perturbed mesh (binary .msh 4.1 when .msh).");
@@ -487,7 +487,7 @@ tmop::SolverOptions solver_options(const Context& ctx) {
   so.verbose = FLAGS_verbose;
   tmop::linear_solver_from_name(FLAGS_linear_solver, &so.linear_solver);
   tmop::solver_method_from_name(FLAGS_solver, &so.method);
-  so.cholesky_max_free_coordinates = FLAGS_cholesky_max_free_coordinates;
+  so.cholesky_max_free_coordinates_3d = FLAGS_cholesky_max_free_coordinates;
   return so;
 }
 

@@ -30,22 +30,28 @@ struct SolverOptions {
   };
   Method method = Method::kLevenbergMarquardt;
   LinearSolver linear_solver = LinearSolver::kAuto;
-  // Problems with at most this many free coordinates use sparse Cholesky under kAuto.
-  int cholesky_max_free_coordinates = 60000;
+  // Problems with at most this many free coordinates use sparse Cholesky under kAuto. The
+  // factor's fill-in grows much faster for tets than for triangles, hence two limits: at 36k
+  // free coordinates a tet mesh's factorisation took 5.3 s per iteration against 1.4 s for CGNR
+  // (docs/benchmarks.md).
+  int cholesky_max_free_coordinates_2d = 400000;
+  int cholesky_max_free_coordinates_3d = 8000;
   // CGNR inner iterations per outer step (Ceres's max_linear_solver_iterations).
   int cgnr_max_iterations = 50;
 
   int max_iterations = 200;  // outer (Ceres) iterations
   double max_seconds = 1e9;  // wall-clock cap for the stage
   // Stop when the objective decreases by less than this fraction of itself in a step.
-  double function_tolerance = 1e-9;
+  double function_tolerance = 1e-7;
   // Stop when the largest gradient entry falls below this fraction of its initial value.
   double gradient_tolerance = 1e-9;
   // Stop when no vertex moves by more than this fraction of its shortest incident edge.
-  double movement_tolerance = 1e-10;
+  double movement_tolerance = 1e-9;
 
   int threads = 0;  // 0: all hardware threads
   // Called after every iteration (also iteration 0) when set; verbose prints a line to stderr.
+  // Without either, the per-iteration history records the objective only (the worst quality and
+  // inverted count cost a pass over the mesh; they are measured before and after the stage).
   std::function<void(const IterationRecord&)> progress;
   bool verbose = false;
 };

@@ -270,7 +270,14 @@ class StageCallback final : public ceres::IterationCallback {
   }
 
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    IterationRecord rec = measure(*mesh_, spec_.rule, table_, frames_);
+    const bool report = spec_.solver.verbose || static_cast<bool>(spec_.solver.progress);
+    IterationRecord rec;
+    if (report) {
+      rec = measure(*mesh_, spec_.rule, table_, frames_);
+    } else {
+      rec.min_quality = std::numeric_limits<double>::quiet_NaN();
+      rec.inverted = -1;
+    }
     rec.iteration = s.iteration == 0 && !result_->history.empty()
                         ? result_->history.back().iteration  // a reweighting round restarts
                         : (result_->history.empty() ? 0 : result_->history.back().iteration + 1);
@@ -669,7 +676,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   const int free_coordinates = static_cast<int>(free_vertices.size()) * d;
   bool cholesky = spec.solver.linear_solver == SolverOptions::LinearSolver::kSparseCholesky ||
                   (spec.solver.linear_solver == SolverOptions::LinearSolver::kAuto &&
-                   free_coordinates <= spec.solver.cholesky_max_free_coordinates);
+                   free_coordinates <= (d == 2 ? spec.solver.cholesky_max_free_coordinates_2d
+                                                : spec.solver.cholesky_max_free_coordinates_3d));
   if (cholesky) {
     so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
     result->linear_solver = "sparse_normal_cholesky";

@@ -5,11 +5,11 @@
 #include <cmath>
 #include <limits>
 
+#include "tmop/element/ideal_element.h"
 #include "tmop/element/shape.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/metric/small_matrix.h"
 #include "tmop/optimize/stage.h"
-#include "tmop/element/ideal_element.h"
 
 namespace tmop {
 namespace {
