@@ -313,7 +313,11 @@ class StageCallback final : public ceres::IterationCallback {
         worst = std::max(worst, std::sqrt(m2) / shortest_[free_[k]]);
       }
       save(&previous_);
-      if (worst <= spec_.solver.movement_tolerance) {
+      // One small step may only mean the trust region collapsed after rejected steps (a
+      // barrier, a manifold's projection); Levenberg-Marquardt widens it again after successes,
+      // so only several small successful steps in a row mean convergence.
+      small_steps_ = worst <= spec_.solver.movement_tolerance ? small_steps_ + 1 : 0;
+      if (small_steps_ >= 3) {
         reason_ = "vertex movement below tolerance (relative to local edge length)";
         return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
       }
@@ -341,6 +345,7 @@ class StageCallback final : public ceres::IterationCallback {
   std::chrono::steady_clock::time_point start_;
   std::vector<double> previous_;
   double initial_gradient_ = 0;
+  int small_steps_ = 0;
   std::string reason_;
 };
 
@@ -677,7 +682,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   bool cholesky = spec.solver.linear_solver == SolverOptions::LinearSolver::kSparseCholesky ||
                   (spec.solver.linear_solver == SolverOptions::LinearSolver::kAuto &&
                    free_coordinates <= (d == 2 ? spec.solver.cholesky_max_free_coordinates_2d
-                                                : spec.solver.cholesky_max_free_coordinates_3d));
+                                               : spec.solver.cholesky_max_free_coordinates_3d));
   if (cholesky) {
     so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
     result->linear_solver = "sparse_normal_cholesky";
@@ -687,7 +692,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     so.max_linear_solver_iterations = spec.solver.cgnr_max_iterations;
     result->linear_solver = "cgnr_jacobi";
   }
-  so.use_nonmonotonic_steps = true;
+  so.use_nonmonotonic_steps = spec.solver.nonmonotonic_steps;
   so.initial_trust_region_radius = 1e2;
   so.max_num_iterations = spec.solver.max_iterations;
   so.max_solver_time_in_seconds = spec.solver.max_seconds;
