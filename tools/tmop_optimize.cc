@@ -21,6 +21,7 @@
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/orientation.h"
 #include "tmop/mesh/validate.h"
+#include "tmop/quality/quality_report.h"
 #include "tmop/recipes/equal_edge.h"
 #include "tmop/recipes/improve_shape.h"
 #include "tmop/recipes/laplace.h"
@@ -91,9 +92,23 @@ bool write_text_atomically(const std::string& path, const std::string& text) {
   return std::rename(tmp.c_str(), path.c_str()) == 0;
 }
 
-void print_measure(const char* label, const tmop::IterationRecord& r, int elements) {
-  std::printf("%-7s elements %d  inverted %d  worst shape quality %.6f\n", label, elements,
-              r.inverted, r.min_quality);
+// One line of the quality report (tmop_quality gives the whole report).
+void print_quality(const char* label, const tmop::Mesh& mesh) {
+  const tmop::QualityReport q = tmop::compute_quality(mesh);
+  std::printf("%-7s %lld elements, %lld inverted", label, static_cast<long long>(q.num_elements),
+              static_cast<long long>(q.inverted_cells));
+  if (q.mean_ratio.count > 0)
+    std::printf(", mean ratio min %.4f mean %.4f", q.mean_ratio.min, q.mean_ratio.mean);
+  if (q.scaled_jacobian.count > 0)
+    std::printf(", scaled Jacobian min %.4f mean %.4f", q.scaled_jacobian.min,
+                q.scaled_jacobian.mean);
+  if (q.tets > 0)
+    std::printf(", dihedral %.2f..%.2f deg, %lld slivers", q.min_dihedral.min, q.max_dihedral.max,
+                static_cast<long long>(q.slivers));
+  if (q.certifiable_cells > 0)
+    std::printf(", %lld of %lld certified", static_cast<long long>(q.certified_cells),
+                static_cast<long long>(q.certifiable_cells));
+  std::printf("\n");
 }
 
 }  // namespace
@@ -189,8 +204,7 @@ int main(int argc, char** argv) {
 
   RecipeResult result;
   const IterationRecord before = measure_mesh(mesh, opt.rule);
-  const int elements = mesh.num_elements();
-  print_measure("before:", before, elements);
+  print_quality("before:", mesh);
   bool write_anyway = false;
   if ((FLAGS_recipe == "shape" || FLAGS_recipe == "equal_edge" || FLAGS_recipe == "size_adapt" ||
        FLAGS_recipe == "laplace") &&
@@ -255,7 +269,7 @@ int main(int argc, char** argv) {
                 st.name.c_str(), st.initial_objective, st.final_objective, st.iterations, st.solves,
                 st.seconds, st.termination.c_str());
   if (!s.ok() && !write_anyway) return fail(1, FLAGS_input + ": " + s.message());
-  print_measure("after:", result.after, elements);
+  print_quality("after:", mesh);
   if (result.certified >= 0)
     std::printf("certified valid everywhere (Bernstein bound): %d of %d quadratic cells\n",
                 result.certified, result.certified + result.uncertified);
