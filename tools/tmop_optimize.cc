@@ -27,6 +27,7 @@
 #include "tmop/recipes/laplace.h"
 #include "tmop/recipes/preserve.h"
 #include "tmop/recipes/size_adapt.h"
+#include "tmop/recipes/sliver.h"
 #include "tmop/recipes/untangle.h"
 
 DEFINE_string(input, "", "Input mesh (.msh .vtk .vtu .mesh .obj .off .ply .stl).");
@@ -37,7 +38,8 @@ DEFINE_string(recipe, "auto",
               "untangle: untangle only; surface: shape improvement of a surface mesh on its "
               "geometry (--geometry); equal_edge: equal edge lengths keeping shapes; "
               "size_adapt: shapes with the local (or --size_field) size; preserve: follow a "
-              "moved boundary (--moved); laplace: smart Laplacian baseline.");
+              "moved boundary (--moved); laplace: smart Laplacian baseline; sliver: remove "
+              "slivers, keep the boundary layer (slides by default).");
 DEFINE_bool(write_on_failure, false,
             "When untangling fails, still write the best mesh reached to --output.");
 DEFINE_string(metric, "", "Metric name (default: the recipe's); see --list_metrics.");
@@ -133,15 +135,19 @@ int main(int argc, char** argv) {
   }
   if (FLAGS_input.empty() || FLAGS_output.empty())
     return fail(2, "--input and --output are required (see --help)");
-  const std::string recipes[] = {"auto",       "shape",      "untangle", "surface",
-                                 "equal_edge", "size_adapt", "preserve", "laplace"};
+  const std::string recipes[] = {"auto",       "shape",    "untangle", "surface", "equal_edge",
+                                 "size_adapt", "preserve", "laplace",  "sliver"};
   if (std::find(std::begin(recipes), std::end(recipes), FLAGS_recipe) == std::end(recipes))
     return fail(2, "unknown --recipe '" + FLAGS_recipe +
                        "' (known: auto, shape, untangle, surface, equal_edge, size_adapt, "
-                       "preserve, laplace)");
+                       "preserve, laplace, sliver)");
   if (FLAGS_boundary != "fixed" && FLAGS_boundary != "slide")
     return fail(2, "--boundary must be fixed or slide, not '" + FLAGS_boundary + "'");
-  const bool slide = FLAGS_boundary == "slide" || FLAGS_recipe == "surface";
+  // Recipes surface and sliver slide by default (their definitions); the others keep the
+  // boundary fixed unless told.
+  const bool boundary_given = !gflags::GetCommandLineFlagInfoOrDie("boundary").is_default;
+  const bool slide = FLAGS_boundary == "slide" || FLAGS_recipe == "surface" ||
+                     (FLAGS_recipe == "sliver" && !boundary_given);
   if (FLAGS_recipe == "preserve" && FLAGS_moved.empty())
     return fail(2, "--recipe=preserve needs --moved=FILE (the mesh with its boundary moved)");
 
@@ -199,7 +205,7 @@ int main(int argc, char** argv) {
     if (flipped) reorient(&moved);
   }
   if (slide && FLAGS_recipe != "auto" && FLAGS_recipe != "shape" && FLAGS_recipe != "untangle" &&
-      FLAGS_recipe != "surface")
+      FLAGS_recipe != "surface" && FLAGS_recipe != "sliver")
     return fail(2, "--boundary=slide is not available for recipe " + FLAGS_recipe);
 
   RecipeResult result;
@@ -236,6 +242,13 @@ int main(int argc, char** argv) {
     p.rule = opt.rule;
     p.solver = opt.solver;
     s = preserve(&mesh, p, &result);
+  } else if (FLAGS_recipe == "sliver") {
+    SliverOptions sl;
+    sl.slide = slide;
+    sl.boundary = opt.boundary;
+    sl.rule = opt.rule;
+    sl.solver = opt.solver;
+    s = remove_slivers(&mesh, sl, &result);
   } else if (FLAGS_recipe == "laplace") {
     LaplaceOptions l;
     l.max_sweeps = FLAGS_max_sweeps;

@@ -1,0 +1,47 @@
+// tmop/recipes/sliver.h
+// Sliver removal that preserves a boundary layer (viscous CFD meshes): the seed's formula
+//   F = sum_k c_k (|T1|^3 / (3 sqrt3 det T1) - 1) + (1 - c_k) |T2 - I|^2,
+//   T1 = A W1^-1, W1 the regular tet (shape_cubic_barrier_3d, mu_304),
+//   T2 = A W2^-1, W2 the initial mesh's Jacobian (size_shape_orientation; its barrier form
+//        |T2 - I|^2 / (2 det T2) when the input is valid, which it must be: see below),
+//   c_k = 1 / (1 + exp(-steepness (d_k - threshold))), d_k the element's max dihedral angle in
+//        the initial mesh, degrees.
+// Good elements (small max dihedral: the boundary layer's flat tets included) have c_k ~ 0 and
+// keep their initial Jacobian, size and orientation; slivers (max dihedral near 180) have
+// c_k ~ 1 and are driven to the regular shape. Boundary vertices slide on their geometry by
+// default. Tets only (other cells in the mesh keep c_k = 0, i.e. their initial shape).
+//
+// The input must be valid: the second term's targets are its own Jacobians, which an inverted
+// element would carry into the result (run --recipe=auto first).
+#ifndef TMOP_RECIPES_SLIVER_H_
+#define TMOP_RECIPES_SLIVER_H_
+
+#include <vector>
+
+#include "tmop/core/status.h"
+#include "tmop/mesh/mesh.h"
+#include "tmop/recipes/recipe_geometry.h"
+#include "tmop/recipes/recipe_result.h"
+
+namespace tmop {
+
+struct SliverOptions {
+  // The logistic blend of the two terms: c = 1 / (1 + exp(-steepness (d - threshold))), d the
+  // max dihedral angle in degrees. The seed's values: 0.4394 per degree around 135 degrees.
+  double steepness = 0.4394;
+  double threshold_deg = 135;
+  // Boundary vertices slide on the input's own boundary (or boundary.geometry); false: fixed.
+  bool slide = true;
+  BoundaryOptions boundary;
+  std::vector<char> fixed;  // per-vertex flags added to the geometry's corners
+  SampleRule rule = SampleRule::kDefault;
+  SolverOptions solver;
+};
+
+// Fails, leaving the mesh unchanged, on a mesh without tets, an inverted input, or a bad
+// geometry.
+Status remove_slivers(Mesh* mesh, const SliverOptions& options, RecipeResult* result);
+
+}  // namespace tmop
+
+#endif  // TMOP_RECIPES_SLIVER_H_
