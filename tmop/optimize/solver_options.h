@@ -35,7 +35,7 @@ struct SolverOptions {
   // free coordinates a tet mesh's factorisation took 5.3 s per iteration against 1.4 s for CGNR
   // (docs/benchmarks.md).
   int cholesky_max_free_coordinates_2d = 400000;
-  int cholesky_max_free_coordinates_3d = 8000;
+  int cholesky_max_free_coordinates_3d = 4000;
   // CGNR inner iterations per outer step (Ceres's max_linear_solver_iterations).
   int cgnr_max_iterations = 50;
 
