@@ -36,6 +36,8 @@
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/quality_json.h"
 #include "tmop/quality/quality_report.h"
+#include "tmop/quality/quality_svg.h"
+#include "tmop/quality/quality_svg.h"
 
 DEFINE_string(a, "", "First mesh (or the first positional argument).");
 DEFINE_string(b, "", "Second mesh, same vertices and cells as A (or the second positional one).");
@@ -44,6 +46,9 @@ DEFINE_string(reference, "",
               "shown and displacements of A and B from it are added.");
 DEFINE_bool(json, false,
             "Print JSON (stable keys, documented in the file header) instead of text.");
+DEFINE_string(svg, "",
+              "Also write an SVG overlaying A's and B's histograms and (tets) max-vs-min "
+              "dihedral scatter plots, A as 'before' and B as 'after'.");
 DEFINE_int32(threads, 0, "Threads for the quality measures; 0 = all cores.");
 
 namespace {
@@ -322,6 +327,17 @@ int main(int argc, char** argv) {
   if (in.size() == 3) {
     moves.emplace_back("a_minus_reference", displacement(in[0].mesh, a.mesh));
     moves.emplace_back("b_minus_reference", displacement(in[0].mesh, b.mesh));
+  }
+  if (!FLAGS_svg.empty()) {
+    const std::string svg = tmop::quality_svg_compare(a.report, b.report, a.file, b.file);
+    const std::string tmp = FLAGS_svg + ".tmp";
+    std::FILE* f = std::fopen(tmp.c_str(), "wb");
+    const bool ok = f && std::fwrite(svg.data(), 1, svg.size(), f) == svg.size();
+    if (f) std::fclose(f);
+    if (!ok || std::rename(tmp.c_str(), FLAGS_svg.c_str()) != 0) {
+      std::remove(tmp.c_str());
+      return fail(FLAGS_svg + ": cannot write");
+    }
   }
   if (FLAGS_json) {
     const std::string text = json_report(in, a, b, moves);
