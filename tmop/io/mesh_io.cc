@@ -3,6 +3,7 @@
 #include "tmop/io/mesh_io.h"
 
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -41,6 +42,10 @@ std::string make_temp(const std::string& path, const std::string& ext, int* fd) 
   std::string tmpl = dir + "/." + base + ".tmp-XXXXXX" + suffix;
   *fd = mkstemps(&tmpl[0], static_cast<int>(suffix.size()));
   if (*fd < 0) throw Error(path + ": cannot create a temporary file in " + dir);
+  // mkstemps creates the file 0600; an output file gets the usual 0666 minus the umask.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(*fd, 0666 & ~mask);
   return tmpl;
 }
 
