@@ -18,12 +18,12 @@
 #include <string>
 #include <vector>
 
+#include "tmop/element/ideal_element.h"
 #include "tmop/element/sample_points.h"
 #include "tmop/element/shape.h"
 #include "tmop/metric/metric.h"
 #include "tmop/optimize/sample_point_cost.h"
 #include "tmop/recipes/improve_shape.h"
-#include "tmop/element/ideal_element.h"
 
 namespace {
 
