@@ -24,8 +24,63 @@ void SamplePointCost::set_surface_frame(const double* F) {
   mutable_parameter_block_sizes()->assign(num_nodes_, 3);
 }
 
+// Volume cells of the common sizes with compile-time D (dimension) and N (nodes): the loops
+// unroll (the generic path below costs ~2x on a tet, docs/benchmarks.md).
+template <int D, int N>
+bool SamplePointCost::EvaluateFixed(double const* const* x, double* residuals,
+                                    double** jacobians) const {
+  constexpr int DD = D * D;
+  int row = 0;
+  for (int t = 0; t < num_terms_; ++t) {
+    const SamplePointTerm& term = terms_[t];
+    const double* G = term.G;
+    double T[DD] = {};
+    for (int i = 0; i < N; ++i)
+      for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b) T[a * D + b] += x[i][a] * G[i * D + b];
+    const int m = term.metric->num_residuals();
+    double dr[kMaxMetricResiduals * DD];
+    double* r = residuals + row;
+    if (!term.metric->residuals(T, r, jacobians ? dr : nullptr)) return false;
+    const double s = term.sqrt_weight * sqrt_multiplier_;
+    for (int k = 0; k < m; ++k) r[k] *= s;
+    if (jacobians) {
+      for (int k = 0; k < m; ++k)
+        for (int q = 0; q < DD; ++q) dr[k * DD + q] *= s;
+      for (int i = 0; i < N; ++i) {
+        double* J = jacobians[i];
+        if (!J) continue;
+        const double* g = G + i * D;
+        for (int k = 0; k < m; ++k) {
+          const double* drk = dr + k * DD;
+          double* Jrow = J + (row + k) * D;
+          for (int a = 0; a < D; ++a) {
+            double v = 0;
+            for (int b = 0; b < D; ++b) v += drk[a * D + b] * g[b];
+            Jrow[a] = v;
+          }
+        }
+      }
+    }
+    row += m;
+  }
+  return true;
+}
+
 bool SamplePointCost::Evaluate(double const* const* x_in, double* residuals,
                                double** jacobians) const {
+  if (!frame_) {
+    if (dim_ == 3) {
+      if (num_nodes_ == 4) return EvaluateFixed<3, 4>(x_in, residuals, jacobians);
+      if (num_nodes_ == 8) return EvaluateFixed<3, 8>(x_in, residuals, jacobians);
+      if (num_nodes_ == 6) return EvaluateFixed<3, 6>(x_in, residuals, jacobians);
+      if (num_nodes_ == 10) return EvaluateFixed<3, 10>(x_in, residuals, jacobians);
+    } else {
+      if (num_nodes_ == 3) return EvaluateFixed<2, 3>(x_in, residuals, jacobians);
+      if (num_nodes_ == 4) return EvaluateFixed<2, 4>(x_in, residuals, jacobians);
+      if (num_nodes_ == 6) return EvaluateFixed<2, 6>(x_in, residuals, jacobians);
+    }
+  }
   const int d = dim_, dd = d * d, n = num_nodes_;
   // Surface cells: work on the tangent coordinates y_i = F^T x_i.
   double y[kMaxSurfaceNodes * 2];

@@ -42,6 +42,9 @@ class SamplePointCost final : public ceres::CostFunction {
   double value(double const* const* x) const;
 
  private:
+  template <int D, int N>
+  bool EvaluateFixed(double const* const* x, double* residuals, double** jacobians) const;
+
   int num_nodes_;
   int dim_;
   const double* frame_ = nullptr;
