@@ -39,7 +39,8 @@ DEFINE_string(recipe, "auto",
               "geometry (--geometry); equal_edge: equal edge lengths keeping shapes; "
               "size_adapt: shapes with the local (or --size_field) size; preserve: follow a "
               "moved boundary (--moved); laplace: smart Laplacian baseline; sliver: remove "
-              "slivers, keep the boundary layer (slides by default).");
+              "slivers, keep the boundary layer (slides by default); high_order: quadratic "
+              "meshes, untangle + shape + Bernstein certificate (the same as auto).");
 DEFINE_bool(write_on_failure, false,
             "When untangling fails, still write the best mesh reached to --output.");
 DEFINE_string(metric, "", "Metric name (default: the recipe's); see --list_metrics.");
@@ -136,11 +137,11 @@ int main(int argc, char** argv) {
   if (FLAGS_input.empty() || FLAGS_output.empty())
     return fail(2, "--input and --output are required (see --help)");
   const std::string recipes[] = {"auto",       "shape",    "untangle", "surface", "equal_edge",
-                                 "size_adapt", "preserve", "laplace",  "sliver"};
+                                 "size_adapt", "preserve", "laplace",  "sliver",  "high_order"};
   if (std::find(std::begin(recipes), std::end(recipes), FLAGS_recipe) == std::end(recipes))
     return fail(2, "unknown --recipe '" + FLAGS_recipe +
                        "' (known: auto, shape, untangle, surface, equal_edge, size_adapt, "
-                       "preserve, laplace, sliver)");
+                       "preserve, laplace, sliver, high_order)");
   if (FLAGS_boundary != "fixed" && FLAGS_boundary != "slide")
     return fail(2, "--boundary must be fixed or slide, not '" + FLAGS_boundary + "'");
   // Recipes surface and sliver slide by default (their definitions); the others keep the
@@ -205,7 +206,8 @@ int main(int argc, char** argv) {
     if (flipped) reorient(&moved);
   }
   if (slide && FLAGS_recipe != "auto" && FLAGS_recipe != "shape" && FLAGS_recipe != "untangle" &&
-      FLAGS_recipe != "surface" && FLAGS_recipe != "sliver")
+      FLAGS_recipe != "surface" && FLAGS_recipe != "sliver" && FLAGS_recipe != "equal_edge" &&
+      FLAGS_recipe != "size_adapt" && FLAGS_recipe != "high_order")
     return fail(2, "--boundary=slide is not available for recipe " + FLAGS_recipe);
 
   RecipeResult result;
@@ -226,6 +228,8 @@ int main(int argc, char** argv) {
     e.shape_guard_weight = FLAGS_shape_guard_weight;
     if (FLAGS_sample_points != "default") e.rule = opt.rule;
     e.solver = opt.solver;
+    e.slide = slide;
+    e.boundary = opt.boundary;
     s = equal_edge(&mesh, e, &result);
   } else if (FLAGS_recipe == "size_adapt") {
     SizeAdaptOptions a;
@@ -234,6 +238,8 @@ int main(int argc, char** argv) {
     a.power = FLAGS_power;
     a.rule = opt.rule;
     a.solver = opt.solver;
+    a.slide = slide;
+    a.boundary = opt.boundary;
     s = size_adapt(&mesh, a, &result);
   } else if (FLAGS_recipe == "preserve") {
     PreserveOptions p;
@@ -270,7 +276,7 @@ int main(int argc, char** argv) {
     if (opt.target.type != TargetType::kReference) u.target.type = TargetType::kIdealEqualSize;
     u.rule = opt.rule;
     u.solver = opt.solver;
-    u.improve_shape_after = FLAGS_recipe == "auto";
+    u.improve_shape_after = FLAGS_recipe == "auto" || FLAGS_recipe == "high_order";
     u.slide = opt.slide;
     u.boundary = opt.boundary;
     u.shape = opt;

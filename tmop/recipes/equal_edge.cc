@@ -29,8 +29,14 @@ Status equal_edge(Mesh* mesh, const EqualEdgeOptions& options, RecipeResult* res
     return Status::Failure("equal_edge: shape_guard_weight must be >= 0");
   result->before = measure_mesh(*mesh, options.rule);
 
+  RecipeGeometry geometry;
+  if (options.slide) {
+    Status g = build_recipe_geometry(*mesh, options.boundary, &geometry);
+    if (!g.ok()) return g;
+  }
   StageSpec stage;
   stage.name = "equal_edge";
+  if (options.slide) geometry.apply(&stage);
   stage.rule = options.rule;
   stage.fixed = options.fixed;
   stage.solver = options.solver;

@@ -25,6 +25,7 @@
 #include "tmop/core/status.h"
 #include "tmop/mesh/mesh.h"
 #include "tmop/optimize/stage.h"
+#include "tmop/recipes/recipe_geometry.h"
 #include "tmop/recipes/recipe_result.h"
 
 namespace tmop {
@@ -48,8 +49,11 @@ struct EqualEdgeOptions {
   SampleRule rule = SampleRule::kCorners;
 
   // Per-vertex flags (1 = fixed), num_vertices() entries. Empty (default): every boundary vertex
-  // is fixed. Sliding boundaries come with geometry (tmop/geometry).
+  // is fixed (or slides, below).
   std::vector<char> fixed;
+  // Boundary vertices slide on their curves and surfaces (recipe_geometry.h); corners stay.
+  bool slide = false;
+  BoundaryOptions boundary;
 
   // Solver settings of the stage (optimize/solver_options.h); defaults suit meshes up to ~1M
   // elements.

@@ -15,8 +15,14 @@ Status size_adapt(Mesh* mesh, const SizeAdaptOptions& options, RecipeResult* res
   if (!(options.power >= 1)) return Status::Failure("size_adapt: power must be >= 1");
   result->before = measure_mesh(*mesh, options.rule);
 
+  RecipeGeometry geometry;
+  if (options.slide) {
+    Status g = build_recipe_geometry(*mesh, options.boundary, &geometry);
+    if (!g.ok()) return g;
+  }
   StageSpec stage;
   stage.name = "size_adapt";
+  if (options.slide) geometry.apply(&stage);
   stage.rule = options.rule;
   stage.fixed = options.fixed;
   stage.solver = options.solver;

@@ -24,6 +24,7 @@
 #include "tmop/core/status.h"
 #include "tmop/mesh/mesh.h"
 #include "tmop/optimize/stage.h"
+#include "tmop/recipes/recipe_geometry.h"
 #include "tmop/recipes/recipe_result.h"
 
 namespace tmop {
@@ -47,6 +48,9 @@ struct SizeAdaptOptions {
 
   // Per-vertex flags (1 = fixed), num_vertices() entries. Empty (default): the boundary.
   std::vector<char> fixed;
+  // Boundary vertices slide on their curves and surfaces (recipe_geometry.h); corners stay.
+  bool slide = false;
+  BoundaryOptions boundary;
 
   SolverOptions solver;
 };
