@@ -21,6 +21,7 @@
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/orientation.h"
 #include "tmop/mesh/validate.h"
+#include "tmop/quality/quality_json.h"
 #include "tmop/quality/quality_report.h"
 #include "tmop/recipes/equal_edge.h"
 #include "tmop/recipes/improve_shape.h"
@@ -95,9 +96,9 @@ bool write_text_atomically(const std::string& path, const std::string& text) {
   return std::rename(tmp.c_str(), path.c_str()) == 0;
 }
 
-// One line of the quality report (tmop_quality gives the whole report).
-void print_quality(const char* label, const tmop::Mesh& mesh) {
-  const tmop::QualityReport q = tmop::compute_quality(mesh);
+// One line of the quality report (tmop_quality gives the whole report); returns the report.
+tmop::QualityReport print_quality(const char* label, const tmop::Mesh& mesh) {
+  tmop::QualityReport q = tmop::compute_quality(mesh);
   std::printf("%-7s %lld elements, %lld inverted", label, static_cast<long long>(q.num_elements),
               static_cast<long long>(q.inverted_cells));
   if (q.mean_ratio.count > 0)
@@ -112,6 +113,24 @@ void print_quality(const char* label, const tmop::Mesh& mesh) {
     std::printf(", %lld of %lld certified", static_cast<long long>(q.certified_cells),
                 static_cast<long long>(q.certifiable_cells));
   std::printf("\n");
+  return q;
+}
+
+// The run report: the recipe's record plus tmop_quality's report of the input and the result
+// (the same keys as tmop_quality --json and tmop_compare --json, docs/quality.md).
+std::string run_report(const tmop::RecipeResult& result, const tmop::QualityReport& before,
+                       const tmop::QualityReport& after) {
+  auto indent = [](std::string text) {
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    std::string out;
+    for (char c : text) out += c == '\n' ? std::string("\n  ") : std::string(1, c);
+    return out;
+  };
+  return "{\n  \"input\": " + tmop::json_string(FLAGS_input) +
+         ",\n  \"output\": " + tmop::json_string(FLAGS_output) +
+         ",\n  \"run\": " + tmop::recipe_json(result) +
+         ",\n  \"quality_before\": " + indent(tmop::quality_json(before)) +
+         ",\n  \"quality_after\": " + indent(tmop::quality_json(after)) + "\n}";
 }
 
 }  // namespace
@@ -212,7 +231,7 @@ int main(int argc, char** argv) {
 
   RecipeResult result;
   const IterationRecord before = measure_mesh(mesh, opt.rule);
-  print_quality("before:", mesh);
+  const QualityReport quality_before = print_quality("before:", mesh);
   bool write_anyway = false;
   if ((FLAGS_recipe == "shape" || FLAGS_recipe == "equal_edge" || FLAGS_recipe == "size_adapt" ||
        FLAGS_recipe == "laplace") &&
@@ -288,7 +307,7 @@ int main(int argc, char** argv) {
                 st.name.c_str(), st.initial_objective, st.final_objective, st.iterations, st.solves,
                 st.seconds, st.termination.c_str());
   if (!s.ok() && !write_anyway) return fail(1, FLAGS_input + ": " + s.message());
-  print_quality("after:", mesh);
+  const QualityReport quality_after = print_quality("after:", mesh);
   if (result.certified >= 0)
     std::printf("certified valid everywhere (Bernstein bound): %d of %d quadratic cells\n",
                 result.certified, result.certified + result.uncertified);
@@ -299,7 +318,8 @@ int main(int argc, char** argv) {
   s = write_mesh(FLAGS_output, mesh, wopt);
   if (!s.ok()) return fail(2, s.message());
   std::printf("wrote %s\n", FLAGS_output.c_str());
-  if (!FLAGS_report.empty() && !write_text_atomically(FLAGS_report, recipe_json(result)))
+  if (!FLAGS_report.empty() &&
+      !write_text_atomically(FLAGS_report, run_report(result, quality_before, quality_after)))
     return fail(2, FLAGS_report + ": cannot write the report");
   if (write_anyway) return fail(1, FLAGS_input + ": " + s.message() + " (best mesh written)");
   return 0;
