@@ -19,6 +19,17 @@ SamplePointCost::SamplePointCost(int num_nodes, int dim, int num_terms,
   mutable_parameter_block_sizes()->assign(num_nodes, dim);
 }
 
+// Surface cells work on the tangent coordinates y_i = F^T x_i (2 per node).
+double const* const* SamplePointCost::tangent_coordinates(double const* const* x, double* y,
+                                                          const double** yp) const {
+  for (int i = 0; i < num_nodes_; ++i) {
+    for (int a = 0; a < 2; ++a)
+      y[2 * i + a] = frame_[a] * x[i][0] + frame_[2 + a] * x[i][1] + frame_[4 + a] * x[i][2];
+    yp[i] = y + 2 * i;
+  }
+  return yp;
+}
+
 void SamplePointCost::set_surface_frame(const double* F) {
   frame_ = F;
   mutable_parameter_block_sizes()->assign(num_nodes_, 3);
@@ -85,16 +96,7 @@ bool SamplePointCost::Evaluate(double const* const* x_in, double* residuals,
   // Surface cells: work on the tangent coordinates y_i = F^T x_i.
   double y[kMaxSurfaceNodes * 2];
   const double* yp[kMaxSurfaceNodes];
-  double const* const* x = x_in;
-  if (frame_) {
-    for (int i = 0; i < n; ++i) {
-      for (int a = 0; a < 2; ++a)
-        y[2 * i + a] =
-            frame_[a] * x_in[i][0] + frame_[2 + a] * x_in[i][1] + frame_[4 + a] * x_in[i][2];
-      yp[i] = y + 2 * i;
-    }
-    x = yp;
-  }
+  double const* const* x = frame_ ? tangent_coordinates(x_in, y, yp) : x_in;
   const int m_total = num_residuals();
   int row = 0;
   for (int t = 0; t < num_terms_; ++t) {
@@ -148,16 +150,7 @@ double SamplePointCost::value(double const* const* x_in) const {
   const int d = dim_, n = num_nodes_;
   double y[kMaxSurfaceNodes * 2];
   const double* yp[kMaxSurfaceNodes];
-  double const* const* x = x_in;
-  if (frame_) {
-    for (int i = 0; i < n; ++i) {
-      for (int a = 0; a < 2; ++a)
-        y[2 * i + a] =
-            frame_[a] * x_in[i][0] + frame_[2 + a] * x_in[i][1] + frame_[4 + a] * x_in[i][2];
-      yp[i] = y + 2 * i;
-    }
-    x = yp;
-  }
+  double const* const* x = frame_ ? tangent_coordinates(x_in, y, yp) : x_in;
   double sum = 0;
   for (int t = 0; t < num_terms_; ++t) {
     const SamplePointTerm& term = terms_[t];

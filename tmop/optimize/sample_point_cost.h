@@ -42,6 +42,8 @@ class SamplePointCost final : public ceres::CostFunction {
   double value(double const* const* x) const;
 
  private:
+  double const* const* tangent_coordinates(double const* const* x, double* y,
+                                           const double** yp) const;
   template <int D, int N>
   bool EvaluateFixed(double const* const* x, double* residuals, double** jacobians) const;
 

@@ -32,15 +32,11 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
   const int d = mesh->dim();
   result->before = measure_mesh(*mesh, options.rule);
 
-  const RecipeGeometry* geometry = options.geometry;
   RecipeGeometry own;
-  if (!geometry && (options.slide || is_surface_mesh(*mesh))) {
-    BoundaryOptions b = options.boundary;
-    b.slide = options.slide || b.slide;
-    Status s = build_recipe_geometry(*mesh, b, &own);
-    if (!s.ok()) return s;
-    geometry = &own;
-  }
+  const RecipeGeometry* geometry = nullptr;
+  Status gs = resolve_recipe_geometry(*mesh, options.slide, options.boundary, options.geometry,
+                                      &own, &geometry);
+  if (!gs.ok()) return gs;
   const std::vector<double> original = mesh->coords;
   double power = options.power;
   for (int attempt = 0; attempt < 3; ++attempt) {

@@ -14,6 +14,18 @@ Status build_recipe_geometry(const Mesh& mesh, const BoundaryOptions& options,
   return BoundaryConstraints::Build(mapped, opt, &out->constraints);
 }
 
+Status resolve_recipe_geometry(const Mesh& mesh, bool slide, const BoundaryOptions& options,
+                               const RecipeGeometry* given, RecipeGeometry* own,
+                               const RecipeGeometry** out) {
+  *out = given;
+  if (given || !(slide || is_surface_mesh(mesh))) return Status::Ok();
+  BoundaryOptions b = options;
+  b.slide = slide || b.slide;
+  Status s = build_recipe_geometry(mesh, b, own);
+  if (s.ok()) *out = own;
+  return s;
+}
+
 bool is_surface_mesh(const Mesh& mesh) { return mesh.dim() == 2 && mesh.space_dim == 3; }
 
 }  // namespace tmop

@@ -32,6 +32,13 @@ struct RecipeGeometry {
 // classified.
 Status build_recipe_geometry(const Mesh& mesh, const BoundaryOptions& options, RecipeGeometry* out);
 
+// The geometry a recipe runs with: `given` when set; else one built into *own when the recipe
+// slides or the mesh is a surface mesh (which always needs its geometry); else none (*out =
+// nullptr: the boundary is fixed).
+Status resolve_recipe_geometry(const Mesh& mesh, bool slide, const BoundaryOptions& options,
+                               const RecipeGeometry* given, RecipeGeometry* own,
+                               const RecipeGeometry** out);
+
 // True for a surface mesh (2D elements in 3D space): such meshes always need a geometry.
 bool is_surface_mesh(const Mesh& mesh);
 

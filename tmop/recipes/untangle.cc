@@ -74,15 +74,11 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
 
-  const RecipeGeometry* geometry = options.geometry;
   RecipeGeometry own;
-  if (!geometry && (options.slide || is_surface_mesh(*mesh))) {
-    BoundaryOptions b = options.boundary;
-    b.slide = options.slide || b.slide;
-    Status s = build_recipe_geometry(*mesh, b, &own);
-    if (!s.ok()) return s;
-    geometry = &own;
-  }
+  const RecipeGeometry* geometry = nullptr;
+  Status gs = resolve_recipe_geometry(*mesh, options.slide, options.boundary, options.geometry,
+                                      &own, &geometry);
+  if (!gs.ok()) return gs;
   SampleSet extra;
   std::vector<int> uncertified, proven_inverted;
   int with_certificate = 0;
