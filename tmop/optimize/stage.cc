@@ -718,7 +718,16 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   };
   const int frame_rounds = surface ? std::max(1, spec.surface_frame_rounds) : 1;
   for (int frame_round = 0; frame_round < frame_rounds; ++frame_round) {
-    if (frame_round > 0) update_frames();
+    if (frame_round > 0) {
+      // New frames at the new positions. A barrier stage must still start valid: if a cell
+      // whose frame turned has det T <= 0 in it, keep the previous frames and stop here.
+      const std::vector<double> previous_frames = frames.F;
+      update_frames();
+      if (barrier && !(min_target_det(*mesh, point_cell, G[0], g_offset, nullptr, frames) > 0)) {
+        frames.F = previous_frames;
+        break;
+      }
+    }
     if (spec.untangle) {
       // eps schedule: after each solve, sigma = max(1 - E_final / E_initial, 0.1) (the relative
       // decrease the solve achieved),
