@@ -13,8 +13,18 @@
 #include "tmop/mesh/validate.h"
 #include "tmop/metric/metric.h"
 #include "tmop/optimize/stage.h"
+#include "tmop/quality/quality_json.h"
+#include "tmop/quality/quality_report.h"
+#include "tmop/recipes/equal_edge.h"
 #include "tmop/recipes/improve_shape.h"
+#include "tmop/recipes/improve_surface.h"
+#include "tmop/recipes/laplace.h"
+#include "tmop/recipes/preserve.h"
+#include "tmop/recipes/recipe_geometry.h"
 #include "tmop/recipes/recipe_result.h"
+#include "tmop/recipes/size_adapt.h"
+#include "tmop/recipes/sliver.h"
+#include "tmop/recipes/untangle.h"
 #include "tmop/target/target.h"
 
 #endif  // TMOP_TMOP_H_
