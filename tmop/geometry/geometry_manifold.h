@@ -28,7 +28,7 @@ class GeometryManifold : public ceres::Manifold {
   double Distance(const double* x) const;
   // Unit normal of a surface in 3D at (the projection of) x, written to n[3]. Curves have no
   // unique normal: they return false and leave n untouched.
-  virtual bool Normal(const double* x, double* n) const { return false; }
+  virtual bool Normal(const double* /*x*/, double* /*n*/) const { return false; }
 };
 
 }  // namespace tmop
