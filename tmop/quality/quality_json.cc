@@ -110,6 +110,12 @@ std::string quality_json(const QualityReport& r) {
   w.field("certified_cells", integer(r.certified_cells));
   w.field("tets", integer(r.tets));
   w.field("slivers", r.tets > 0 ? integer(r.slivers) : "null");
+  w.open("topology_capped");
+  w.field("capped_valence_vertices", integer(r.capped_valence_vertices));
+  w.field("capped_valence_examples", integer_array(r.capped_valence_examples));
+  w.field("max_valence", integer(r.max_valence));
+  w.field("cells_all_boundary", integer(r.cells_all_boundary));
+  w.close();
   write_range("angle_deg", r.min_angle, r.max_angle, &w);
   write_range("dihedral_deg", r.min_dihedral, r.max_dihedral, &w);
   if (r.edge_length.count > 0) {

@@ -5,6 +5,7 @@
 
 #include "tmop/quality/cell_quality.h"
 #include "tmop/quality/element_scan.h"
+#include "tmop/quality/topology_caps.h"
 
 namespace tmop {
 namespace {
@@ -105,6 +106,7 @@ QualityReport compute_quality(const Mesh& mesh, const QualityOptions& options) {
     m->summarize();
   }
   r.edge_length = edge_length_stats(mesh, options.threads);
+  topology_caps(mesh, &r);
   return r;
 }
 

@@ -43,6 +43,21 @@ std::string quality_summary(const QualityReport& r) {
            r.certifiable_cells);
   if (r.tets > 0) append(&out, "   slivers: %" PRId64 " of %" PRId64 " tets", r.slivers, r.tets);
   out += "\n";
+  if (r.capped_valence_vertices > 0 || r.cells_all_boundary > 0) {
+    out += "quality capped by topology:";
+    if (r.capped_valence_vertices > 0) {
+      append(&out, " %" PRId64 " vertices of extreme valence (max %" PRId64 "; ids",
+             r.capped_valence_vertices, r.max_valence);
+      for (std::int64_t v : r.capped_valence_examples) append(&out, " %" PRId64, v);
+      out += r.capped_valence_vertices > static_cast<std::int64_t>(r.capped_valence_examples.size())
+                 ? " ...)"
+                 : ")";
+    }
+    if (r.cells_all_boundary > 0)
+      append(&out, "%s %" PRId64 " elements with every corner on the boundary",
+             r.capped_valence_vertices > 0 ? ";" : "", r.cells_all_boundary);
+    out += "\n";
+  }
   if (r.edge_length.count > 0) {
     append(&out, "edge length (%" PRId64 " unique edges): min %s  mean %s  max %s\n",
            r.edge_length.count, g6(r.edge_length.min).c_str(), g6(r.edge_length.mean).c_str(),
