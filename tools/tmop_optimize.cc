@@ -226,7 +226,7 @@ int main(int argc, char** argv) {
   }
   if (slide && FLAGS_recipe != "auto" && FLAGS_recipe != "shape" && FLAGS_recipe != "untangle" &&
       FLAGS_recipe != "surface" && FLAGS_recipe != "sliver" && FLAGS_recipe != "equal_edge" &&
-      FLAGS_recipe != "size_adapt" && FLAGS_recipe != "high_order")
+      FLAGS_recipe != "size_adapt" && FLAGS_recipe != "high_order" && FLAGS_recipe != "laplace")
     return fail(2, "--boundary=slide is not available for recipe " + FLAGS_recipe);
 
   RecipeResult result;
@@ -277,6 +277,8 @@ int main(int argc, char** argv) {
   } else if (FLAGS_recipe == "laplace") {
     LaplaceOptions l;
     l.max_sweeps = FLAGS_max_sweeps;
+    l.slide = slide;
+    l.boundary = opt.boundary;
     s = laplace(&mesh, l, &result);
   } else if (FLAGS_recipe == "surface") {
     if (!is_surface_mesh(mesh))

@@ -11,6 +11,7 @@
 #include "tmop/io/mesh_io.h"
 #include "tmop/quality/quality_report.h"
 #include "tmop/recipes/improve_shape.h"
+#include "tmop/recipes/laplace.h"
 
 namespace tmop {
 namespace {
@@ -59,6 +60,34 @@ TEST(SlidingBoundary, PartStaysOnItsBoundaryAndBeatsTheFixedBoundary) {
       "%.2f; boundary distance %.1e, %d boundary vertices moved\n",
       q_in.min_dihedral.min, q_fixed.min_dihedral.min, q_slide.min_dihedral.min,
       q_in.max_dihedral.max, q_fixed.max_dihedral.max, q_slide.max_dihedral.max, worst, moved);
+}
+
+}  // namespace
+}  // namespace tmop
+
+namespace tmop {
+namespace {
+
+TEST(SlidingBoundary, LaplaceProjectsBoundaryVerticesOntoTheirGeometry) {
+  Mesh input;
+  ASSERT_TRUE(read_mesh(TMOP_SOURCE_DIR "/data/part_perturbed.msh", &input).ok());
+  Mesh mesh = input;
+  LaplaceOptions opt;
+  opt.slide = true;
+  RecipeResult result;
+  ASSERT_TRUE(laplace(&mesh, opt, &result).ok());
+  std::unique_ptr<BoundaryConstraints> geometry;
+  ASSERT_TRUE(BoundaryConstraints::Build(input, BoundaryOptions(), &geometry).ok());
+  double worst = 0;
+  int moved = 0;
+  for (int v = 0; v < input.num_vertices(); ++v) {
+    if (geometry->kind(v) == VertexKind::kInterior) continue;
+    worst = std::max(worst, geometry->distance(v, mesh.vertex(v)));
+    moved += mesh.vertex(v)[0] != input.vertex(v)[0];
+  }
+  EXPECT_LT(worst, 1e-10);
+  EXPECT_GT(moved, 100);
+  EXPECT_EQ(compute_quality(mesh).inverted_cells, 0);
 }
 
 }  // namespace

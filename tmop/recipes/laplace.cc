@@ -83,6 +83,14 @@ Status laplace(Mesh* mesh, const LaplaceOptions& options, RecipeResult* result) 
       return Status::Failure("laplace: quadratic elements are not supported (cell " +
                              std::to_string(c) + " is " + cell_name(mesh->cell_type(c)) + ")");
   std::vector<char> fixed = options.fixed;
+  std::unique_ptr<BoundaryConstraints> geometry;
+  if (options.slide) {
+    Status g = BoundaryConstraints::Build(*mesh, options.boundary, &geometry);
+    if (!g.ok()) return g;
+    const std::vector<char> corners = geometry->fixed_flags();
+    if (fixed.empty()) fixed.assign(mesh->num_vertices(), 0);
+    for (std::size_t v = 0; v < fixed.size() && v < corners.size(); ++v) fixed[v] |= corners[v];
+  }
   if (fixed.empty()) fixed = boundary_vertex_mask(*mesh);
   if (static_cast<int>(fixed.size()) != mesh->num_vertices())
     return Status::Failure("laplace: fixed-vertex flags: one per vertex expected");
@@ -147,6 +155,11 @@ Status laplace(Mesh* mesh, const LaplaceOptions& options, RecipeResult* result) 
             std::min(worst_before, cell_worst_quality(*mesh, cells.items[k], options.rule, ideal));
       double saved[3];
       for (int a = 0; a < d; ++a) saved[a] = x[a], x[a] = centroid[a];
+      if (geometry && geometry->geometry(v)) {  // a sliding vertex: back onto its geometry
+        double on[3];
+        geometry->geometry(v)->Project(x, on);
+        for (int a = 0; a < d; ++a) x[a] = on[a];
+      }
       // Accept only moves that keep every incident element valid (q > 0) and do not lower
       // the worst incident quality; an inverted neighbourhood may only improve.
       double worst_after = std::numeric_limits<double>::infinity();

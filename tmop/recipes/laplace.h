@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "tmop/core/status.h"
+#include "tmop/geometry/boundary_constraints.h"
 #include "tmop/mesh/mesh.h"
 #include "tmop/recipes/recipe_result.h"
 
@@ -42,6 +43,10 @@ struct LaplaceOptions {
 
   // Per-vertex flags (1 = fixed), num_vertices() entries. Empty (default): the boundary is fixed.
   std::vector<char> fixed;
+  // Boundary vertices move too, to their neighbours' centroid projected back onto their curve or
+  // surface (geometry/boundary_constraints.h); corners stay. Volume and planar meshes.
+  bool slide = false;
+  BoundaryOptions boundary;
 };
 
 Status laplace(Mesh* mesh, const LaplaceOptions& options, RecipeResult* result);
