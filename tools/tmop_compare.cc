@@ -37,7 +37,6 @@
 #include "tmop/quality/quality_json.h"
 #include "tmop/quality/quality_report.h"
 #include "tmop/quality/quality_svg.h"
-#include "tmop/quality/quality_svg.h"
 
 DEFINE_string(a, "", "First mesh (or the first positional argument).");
 DEFINE_string(b, "", "Second mesh, same vertices and cells as A (or the second positional one).");

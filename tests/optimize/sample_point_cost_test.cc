@@ -10,9 +10,9 @@
 #include <random>
 #include <set>
 
+#include "tmop/element/ideal_element.h"
 #include "tmop/element/sample_points.h"
 #include "tmop/element/shape.h"
-#include "tmop/element/ideal_element.h"
 
 namespace tmop {
 namespace {

@@ -12,8 +12,7 @@ const int kHexEdges[][2] = {{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 5}, {2, 3},
                             {2, 6}, {3, 7}, {4, 5}, {4, 7}, {5, 6}, {6, 7}};
 const int kWedgeEdges[][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 4},
                               {2, 5}, {3, 4}, {3, 5}, {4, 5}};
-const int kPyramidEdges[][2] = {{0, 1}, {0, 3}, {0, 4}, {1, 2},
-                                {1, 4}, {2, 3}, {2, 4}, {3, 4}};
+const int kPyramidEdges[][2] = {{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 4}, {2, 3}, {2, 4}, {3, 4}};
 
 const CellFacet kLineFacets[] = {{1, {0}}, {1, {1}}};
 const CellFacet kTriFacets[] = {{2, {0, 1}}, {2, {1, 2}}, {2, {2, 0}}};
@@ -37,8 +36,7 @@ const CellInfo kTable[kNumCellTypes] = {
     {"tet4", 3, 4, 4, 1, CellType::kTet4, 4, TMOP_N(kTetEdges), TMOP_N(kTetFacets)},
     {"hex8", 3, 8, 8, 1, CellType::kHex8, 5, TMOP_N(kHexEdges), TMOP_N(kHexFacets)},
     {"wedge6", 3, 6, 6, 1, CellType::kWedge6, 6, TMOP_N(kWedgeEdges), TMOP_N(kWedgeFacets)},
-    {"pyramid5", 3, 5, 5, 1, CellType::kPyramid5, 7, TMOP_N(kPyramidEdges),
-     TMOP_N(kPyramidFacets)},
+    {"pyramid5", 3, 5, 5, 1, CellType::kPyramid5, 7, TMOP_N(kPyramidEdges), TMOP_N(kPyramidFacets)},
     {"tri6", 2, 6, 3, 2, CellType::kTri3, 9, TMOP_N(kTriEdges), TMOP_N(kTriFacets)},
     {"quad9", 2, 9, 4, 2, CellType::kQuad4, 10, TMOP_N(kQuadEdges), TMOP_N(kQuadFacets)},
     {"tet10", 3, 10, 4, 2, CellType::kTet4, 11, TMOP_N(kTetEdges), TMOP_N(kTetFacets)},

@@ -37,13 +37,13 @@ struct CellFacet {
 };
 
 struct CellInfo {
-  const char* name;    // "tri3", "hex27": stable, used in reports and JSON keys
-  int dim;             // reference dimension: 0, 1, 2 or 3
-  int num_nodes;       // nodes of the cell
-  int num_corners;     // vertex nodes (the first num_corners nodes)
-  int order;           // 1 linear, 2 quadratic
-  CellType linear;     // the type made of the corners only
-  int gmsh_type;       // Gmsh element-type number
+  const char* name;  // "tri3", "hex27": stable, used in reports and JSON keys
+  int dim;           // reference dimension: 0, 1, 2 or 3
+  int num_nodes;     // nodes of the cell
+  int num_corners;   // vertex nodes (the first num_corners nodes)
+  int order;         // 1 linear, 2 quadratic
+  CellType linear;   // the type made of the corners only
+  int gmsh_type;     // Gmsh element-type number
   int num_edges;
   const int (*edges)[2];
   int num_facets;

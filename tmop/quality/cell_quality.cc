@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "tmop/element/bezier.h"
+#include "tmop/element/ideal_element.h"
 #include "tmop/element/sample_points.h"
 #include "tmop/element/shape.h"
 #include "tmop/quality/corner_frames.h"
-#include "tmop/element/ideal_element.h"
 #include "tmop/quality/jacobian_certificate.h"
 
 namespace tmop {

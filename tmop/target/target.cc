@@ -4,9 +4,9 @@
 #include <cmath>
 #include <string>
 
+#include "tmop/element/ideal_element.h"
 #include "tmop/element/shape.h"
 #include "tmop/mesh/topology.h"
-#include "tmop/element/ideal_element.h"
 
 namespace tmop {
 namespace {
