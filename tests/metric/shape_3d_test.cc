@@ -1,11 +1,15 @@
 // tests/metric/shape_3d_test.cc
-// The 3D polar shape residuals r = c vec(S - R): the polar rotation and its derivative, the
+// The 3D shape residuals: the default deviatoric form r = sqrt(mu) w / |w| (exact, accurate
+// near the minimiser, Gauss-Newton model at the minimiser); the polar form r = c vec(S - R): the
+// polar rotation and its derivative, the
 // rotation-fixed Jacobian, J^t r against the gradient with R held fixed, and the Gauss-Newton
 // model along element rotations; the cofactor residual form of the same metrics. Also the
 // small-matrix kernels they rely on.
 #include "tmop/metric/shape_3d.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "tests/metric/metric_test_util.h"
 #include "tmop/metric/small_matrix.h"
@@ -265,6 +269,104 @@ TEST(CofactorShape, IsABarrier) {
       previous = rr;
     }
     EXPECT_GT(previous, 1e5);
+  }
+}
+
+// The published formulas in long double, without the cancellation-free rewriting of shape_3d.cc.
+long double published_mu(Shape3dForm form, const Mat& T) {
+  long double t[9];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) t[3 * i + j] = T(i, j);
+  const long double k[9] = {
+      t[4] * t[8] - t[5] * t[7], t[5] * t[6] - t[3] * t[8], t[3] * t[7] - t[4] * t[6],
+      t[2] * t[7] - t[1] * t[8], t[0] * t[8] - t[2] * t[6], t[1] * t[6] - t[0] * t[7],
+      t[1] * t[5] - t[2] * t[4], t[2] * t[3] - t[0] * t[5], t[0] * t[4] - t[1] * t[3]};
+  const long double tau = t[0] * k[0] + t[1] * k[1] + t[2] * k[2];
+  long double f = 0, fk = 0;
+  for (int n = 0; n < 9; ++n) {
+    f += t[n] * t[n];
+    fk += k[n] * k[n];
+  }
+  switch (form) {
+    case Shape3dForm::kBarrier:
+      return f / (3 * std::cbrt(tau * tau)) - 1;
+    case Shape3dForm::kCubicBarrier:
+      return f * std::sqrt(f) / (3 * std::sqrt(3.0L) * tau) - 1;
+    case Shape3dForm::kConditionBarrier:
+      return std::sqrt(f * fk) / (3 * tau) - 1;
+    default:
+      return f * fk / (9 * tau * tau) - 1;
+  }
+}
+
+// The deviatoric form: 5 residuals whose squared norm is mu itself, for all four barrier forms.
+TEST(DeviatoricShape, FiveResidualsWhoseSquaredNormIsMu) {
+  std::mt19937 rng(20);
+  for (const PolarForm& f : kPolarForms) {
+    std::unique_ptr<Metric> m = make_shape_3d_metric(f.form);
+    EXPECT_EQ(m->num_residuals(), 5);
+    EXPECT_TRUE(m->exact_residuals());
+    for (int trial = 0; trial < 50; ++trial) {
+      const Mat T = random_matrix(3, rng, false, trial < 25 ? 0.3 : 0.02, trial < 25 ? 3.0 : 50.0);
+      Eigen::VectorXd r;
+      ASSERT_TRUE(eval(*m, T, &r, nullptr));
+      const double mu = static_cast<double>(published_mu(f.form, T));
+      // Singular values 0.02..50 make det T itself uncertain to ~1e-11 relative.
+      const double tol = trial < 25 ? 1e-12 : 1e-9;
+      EXPECT_NEAR(r.squaredNorm(), mu, tol * mu) << m->name();
+      EXPECT_NEAR(m->value(T.data()), mu, tol * mu) << m->name();
+    }
+  }
+}
+
+// Near the minimiser the published formulas cancel (mu = |T|^2 / (3 tau^(2/3)) - 1 loses all
+// digits of mu below 1e-16); the rewritten ones keep mu to a few ulps.
+TEST(DeviatoricShape, MuIsAccurateNearTheMinimiser) {
+  std::mt19937 rng(21);
+  for (const PolarForm& f : kPolarForms) {
+    std::unique_ptr<Metric> m = make_shape_3d_metric(f.form);
+    for (double eps : {1e-3, 1e-5, 1e-7}) {
+      const Mat E = Mat::Random(3, 3);
+      const Mat T = 2.5 * random_rotation(3, rng) * (Mat::Identity(3, 3) + eps * E);
+      const long double exact = published_mu(f.form, T);  // 64-bit mantissa: ~1e-19 absolute
+      ASSERT_GT(exact, 0);
+      const double v = m->value(T.data());
+      // mu ~ eps^2: 1e-14 at eps = 1e-7, where a double evaluation of the published formula has
+      // an absolute error ~1e-16, i.e. 1 % of mu; the tolerances are the reference's own error.
+      const double tol = eps > 1e-4 ? 1e-10 : (eps > 1e-6 ? 1e-7 : 1e-4);
+      EXPECT_NEAR(v / static_cast<double>(exact), 1.0, tol) << m->name() << " eps " << eps;
+    }
+  }
+}
+
+// At the minimiser J^t J is half the Hessian of mu (the Gauss-Newton model is exact there), and
+// the Jacobian is continuous at an ideal T (w = 0).
+TEST(DeviatoricShape, GaussNewtonModelIsHalfTheHessianAtTheMinimiser) {
+  std::mt19937 rng(22);
+  for (const PolarForm& f : kPolarForms) {
+    std::unique_ptr<Metric> m = make_shape_3d_metric(f.form);
+    const Mat T0 = 1.3 * random_rotation(3, rng);
+    Eigen::VectorXd r;
+    Mat J;
+    ASSERT_TRUE(eval(*m, T0, &r, &J));
+    EXPECT_LT(r.norm(), 1e-14);
+    // Hessian of mu by central differences of the exact gradient 2 J^t r.
+    const Mat H = central_jacobian(
+        [&](const Mat& X) -> Eigen::VectorXd {
+          Eigen::VectorXd rx;
+          Mat Jx;
+          EXPECT_TRUE(eval(*m, X, &rx, &Jx));
+          return 2.0 * Jx.transpose() * rx;
+        },
+        T0, 9, 1e-5);
+    const Mat JtJ = J.transpose() * J;
+    EXPECT_LT((JtJ - 0.5 * H).norm(), 1e-6 * H.norm()) << m->name();
+    // Just off the minimiser the Jacobian is close to the ideal one.
+    const Mat T1 = T0 * (Mat::Identity(3, 3) + 1e-7 * Mat::Random(3, 3));
+    Eigen::VectorXd r1;
+    Mat J1;
+    ASSERT_TRUE(eval(*m, T1, &r1, &J1));
+    EXPECT_LT((J1.transpose() * J1 - JtJ).norm(), 1e-5 * JtJ.norm()) << m->name();
   }
 }
 

@@ -123,7 +123,9 @@ TEST(BarrierShape, InvariantToScaleRotationAndTranslation) {
           (void)offset;
         }
       }
-      EXPECT_LT(worst, 1e-8) << cell_name(type) << " scale " << scale;
+      EXPECT_LT(worst, 1e-8) << cell_name(type) << " scale " << scale << " "
+                             << result.stages.back().termination << " it "
+                             << result.stages.back().iterations;
     }
   }
 }

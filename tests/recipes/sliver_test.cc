@@ -73,7 +73,9 @@ TEST(SliverRecipe, RemovesSliversAndKeepsTheRest) {
       before.min_dihedral.min, before.max_dihedral.max, after.min_dihedral.min,
       after.max_dihedral.max, kept, far);
   ASSERT_GT(far, 100);
-  EXPECT_GE(kept, 0.75 * far);  // measured 387 of 496 (78%) on this mesh
+  // Measured 368 of 496 (74 %) with the exact mu_304 (the seed's formula); the earlier polar
+  // surrogate, which grows more slowly on bad tets, kept 387 (78 %).
+  EXPECT_GE(kept, 0.7 * far);
 }
 
 }  // namespace

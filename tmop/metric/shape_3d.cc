@@ -13,6 +13,9 @@ namespace tmop {
 namespace {
 
 constexpr double kSqrt3 = 1.73205080756887729353;
+constexpr double kSqrt2 = 1.41421356237309504880;
+constexpr double kInvSqrt2 = 0.70710678118654752440;
+constexpr double kInvSqrt6 = 0.40824829046386301637;
 
 double nan_or_inf(double tau) {
   return std::isnan(tau) ? tau : std::numeric_limits<double>::infinity();
@@ -56,31 +59,17 @@ class BarrierShapeMetric final : public FixedMetric {
  public:
   BarrierShapeMetric(Shape3dForm form, const char* name, const char* alias, double c2,
                      Shape3dResidual residual)
-      : FixedMetric(name, alias, 3, MetricClass::kShape, true, 9, false),
+      : FixedMetric(name, alias, 3, MetricClass::kShape, true,
+                    residual == Shape3dResidual::kDeviatoric ? 5 : 9,
+                    residual == Shape3dResidual::kDeviatoric),
         form_(form),
         c_(std::sqrt(c2)),
         residual_(residual) {}
 
   double value(const double* T) const override {
-    double C[9];
-    small_matrix::cofactor<3>(T, C);
-    const double tau = small_matrix::det_from_cofactor<3>(T, C);
-    if (!(tau > 0.0)) return nan_or_inf(tau);
-    const double f2 = small_matrix::frobenius2<3>(T);
-    switch (form_) {
-      case Shape3dForm::kBarrier: {
-        const double t13 = std::cbrt(tau);
-        return f2 / (3.0 * t13 * t13) - 1.0;
-      }
-      case Shape3dForm::kCubicBarrier:
-        return f2 * std::sqrt(f2) / (3.0 * kSqrt3 * tau) - 1.0;
-      case Shape3dForm::kConditionBarrier:  // |T^-1| = |cof T| / tau
-        return std::sqrt(f2 * small_matrix::frobenius2<3>(C)) / (3.0 * tau) - 1.0;
-      case Shape3dForm::kConditionSquaredBarrier:
-        return f2 * small_matrix::frobenius2<3>(C) / (9.0 * tau * tau) - 1.0;
-      default:
-        return std::numeric_limits<double>::quiet_NaN();
-    }
+    Invariants in;
+    if (!in.compute(T, form_ == Shape3dForm::kBarrier)) return nan_or_inf(in.tau);
+    return mu(in);
   }
 
   bool residuals(const double* T, double* r, double* dr_dT) const override {
@@ -88,6 +77,7 @@ class BarrierShapeMetric final : public FixedMetric {
     small_matrix::cofactor<3>(T, C);
     const double tau = small_matrix::det_from_cofactor<3>(T, C);
     if (!(tau > 0.0) || !std::isfinite(tau)) return false;
+    if (residual_ == Shape3dResidual::kDeviatoric) return deviatoric_residuals(T, r, dr_dT);
     const double a = 1.0 / std::cbrt(tau);
     double S[9], R[9];
     for (int n = 0; n < 9; ++n) S[n] = a * T[n];
@@ -128,6 +118,274 @@ class BarrierShapeMetric final : public FixedMetric {
   }
 
  private:
+  // What the formulas need, for tau > 0: K = cof T, f = |T|^2, fk = |K|^2, M = T^t T (upper
+  // triangle), D = dev M = M - (f / 3) I, w = the coordinates of D in the orthonormal basis
+  // (e11 - e22) / sqrt2, (e11 + e22 - 2 e33) / sqrt6, (e12 + e21) / sqrt2, (e13 + e31) / sqrt2,
+  // (e23 + e32) / sqrt2 of the traceless symmetric matrices (|w| = |D|), and det D.
+  struct Invariants {
+    double K[9], tau, f, fk, M[3][3], D[3][3], w[5], w2, det_D;
+    double q2 = 0;  // tau^(2/3), mu_303 only
+    bool compute(const double* T, bool need_q2) {
+      small_matrix::cofactor<3>(T, K);
+      tau = small_matrix::det_from_cofactor<3>(T, K);
+      if (!(tau > 0.0) || !std::isfinite(tau)) return false;
+      if (need_q2) q2 = small_matrix::cbrt_positive(tau * tau);
+      f = small_matrix::frobenius2<3>(T);
+      fk = small_matrix::frobenius2<3>(K);
+      for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) {
+          M[i][j] = T[i] * T[j] + T[3 + i] * T[3 + j] + T[6 + i] * T[6 + j];
+          M[j][i] = M[i][j];
+        }
+      w[0] = kInvSqrt2 * (M[0][0] - M[1][1]);
+      w[1] = kInvSqrt6 * (M[0][0] + M[1][1] - 2.0 * M[2][2]);
+      w[2] = kSqrt2 * M[0][1];
+      w[3] = kSqrt2 * M[0][2];
+      w[4] = kSqrt2 * M[1][2];
+      w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2] + w[3] * w[3] + w[4] * w[4];
+      const double m = f / 3.0;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) D[i][j] = M[i][j] - (i == j ? m : 0.0);
+      det_D = D[0][0] * (D[1][1] * D[2][2] - D[1][2] * D[1][2]) -
+              D[0][1] * (D[0][1] * D[2][2] - D[1][2] * D[0][2]) +
+              D[0][2] * (D[0][1] * D[1][2] - D[1][1] * D[0][2]);
+      return std::isfinite(f) && std::isfinite(fk) && std::isfinite(w2);
+    }
+  };
+
+  // The published formula as written: accurate to a few ulps of 1 + mu, so relatively accurate
+  // wherever mu is not small.
+  double published_mu(const Invariants& in) const {
+    switch (form_) {
+      case Shape3dForm::kBarrier:
+        return in.f / (3.0 * in.q2) - 1.0;
+      case Shape3dForm::kCubicBarrier:
+        return in.f * std::sqrt(in.f) / (3.0 * kSqrt3 * in.tau) - 1.0;
+      case Shape3dForm::kConditionBarrier:
+        return std::sqrt(in.f * in.fk) / (3.0 * in.tau) - 1.0;
+      case Shape3dForm::kConditionSquaredBarrier:
+        return in.f * in.fk / (9.0 * in.tau * in.tau) - 1.0;
+      default:
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+
+  // Near the minimiser (published mu < kNear) the formulas cancel; there mu = rho |w|^2 with
+  // rho computed without cancellation. With m = f / 3 and the eigenvalues m + d_i of M
+  // (sum d_i = 0): det M = m^3 - m |D|^2 / 2 + det D, hence
+  //   f^3 - 27 tau^2 = 27 |D|^2 (f / 6 - delta),   f fk - 9 tau^2 = |D|^2 (f - 9 delta),
+  // delta = det D / |D|^2 = O(|D|), and a^3 - b^3 = (a - b)(a^2 + ab + b^2) gives
+  //   mu_303 = 9 (f/6 - delta) / (q^2 P) |D|^2,  q^2 = tau^(2/3), P = f^2 + 3 f q^2 + 9 q^4,
+  //   mu_304 = 3 sqrt3 (f/6 - delta) / (tau Q) |D|^2,  Q = f^(3/2) + 3 sqrt3 tau,
+  //   mu_301 = (f - 9 delta) / (3 tau (g + 3 tau)) |D|^2,  g = sqrt(f fk),
+  //   mu_302 = (f - 9 delta) / (9 tau^2) |D|^2.
+  // (Far from the minimiser f - 9 delta cancels instead, on needles: hence two regimes.)
+  static constexpr double kNear = 0.25;
+  double delta(const Invariants& in) const { return in.w2 > 0.0 ? in.det_D / in.w2 : 0.0; }
+  double rho(const Invariants& in) const {
+    const double dl = delta(in);
+    switch (form_) {
+      case Shape3dForm::kBarrier: {
+        const double q2 = in.q2;
+        return 9.0 * (in.f / 6.0 - dl) / (q2 * (in.f * in.f + 3.0 * in.f * q2 + 9.0 * q2 * q2));
+      }
+      case Shape3dForm::kCubicBarrier:
+        return 3.0 * kSqrt3 * (in.f / 6.0 - dl) /
+               (in.tau * (in.f * std::sqrt(in.f) + 3.0 * kSqrt3 * in.tau));
+      case Shape3dForm::kConditionBarrier:
+        return (in.f - 9.0 * dl) / (3.0 * in.tau * (std::sqrt(in.f * in.fk) + 3.0 * in.tau));
+      case Shape3dForm::kConditionSquaredBarrier:
+        return (in.f - 9.0 * dl) / (9.0 * in.tau * in.tau);
+      default:
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  double mu(const Invariants& in) const {
+    const double p = published_mu(in);
+    return p < kNear ? rho(in) * in.w2 : p;
+  }
+
+  // d fk / dT = 2 T (f I - M), row-major.
+  static void dfk_dT(const double* T, const Invariants& in, double* dfk) {
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        double tm = 0.0;
+        for (int c = 0; c < 3; ++c) tm += T[3 * a + c] * in.M[c][b];
+        dfk[3 * a + b] = 2.0 * (in.f * T[3 * a + b] - tm);
+      }
+  }
+
+  // dmu/dT of the published formula (far regime).
+  void mu_gradient(const double* T, const Invariants& in, double* grad) const {
+    const double* K = in.K;
+    const double tau = in.tau, f = in.f, fk = in.fk;
+    switch (form_) {
+      case Shape3dForm::kBarrier: {
+        const double a = 2.0 / (3.0 * in.q2), b = f / (3.0 * tau);
+        for (int n = 0; n < 9; ++n) grad[n] = a * (T[n] - b * K[n]);
+        return;
+      }
+      case Shape3dForm::kCubicBarrier: {
+        const double a = std::sqrt(f) / (kSqrt3 * tau), b = f / (3.0 * tau);
+        for (int n = 0; n < 9; ++n) grad[n] = a * (T[n] - b * K[n]);
+        return;
+      }
+      case Shape3dForm::kConditionBarrier:
+      case Shape3dForm::kConditionSquaredBarrier: {
+        double dfk[9];
+        dfk_dT(T, in, dfk);
+        if (form_ == Shape3dForm::kConditionBarrier) {
+          const double g = std::sqrt(f * fk);
+          const double a = 1.0 / (6.0 * g * tau), b = g / (3.0 * tau * tau);
+          for (int n = 0; n < 9; ++n) grad[n] = a * (2.0 * fk * T[n] + f * dfk[n]) - b * K[n];
+          return;
+        }
+        const double it2 = 1.0 / (9.0 * tau * tau);
+        const double b = 2.0 * f * fk * it2 / tau;
+        for (int n = 0; n < 9; ++n) grad[n] = it2 * (2.0 * fk * T[n] + f * dfk[n]) - b * K[n];
+        return;
+      }
+      default:
+        for (int n = 0; n < 9; ++n) grad[n] = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+
+  // d rho / dT (near regime). d delta = (d det D - delta d|w|^2) / |w|^2 with
+  // d det D / dT = 2 T dev(cof D) and d|w|^2 = d|D|^2 = 4 T D.
+  void rho_gradient(const double* T, const Invariants& in, double rho_value, double* grad) const {
+    const double* K = in.K;
+    const double tau = in.tau, f = in.f;
+    const double dl = delta(in);
+    double ddl[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    if (in.w2 > 0.0) {
+      const double(&D)[3][3] = in.D;
+      double cD[3][3] = {
+          {D[1][1] * D[2][2] - D[1][2] * D[1][2], D[1][2] * D[0][2] - D[0][1] * D[2][2],
+           D[0][1] * D[1][2] - D[1][1] * D[0][2]},
+          {0, D[0][0] * D[2][2] - D[0][2] * D[0][2], D[0][1] * D[0][2] - D[0][0] * D[1][2]},
+          {0, 0, D[0][0] * D[1][1] - D[0][1] * D[0][1]}};
+      cD[1][0] = cD[0][1];
+      cD[2][0] = cD[0][2];
+      cD[2][1] = cD[1][2];
+      // sum_j w_j dw_j = d|D|^2 / 2 = 2 T D, so d delta = (2 / |w|^2) T (dev cof D - 2 delta D).
+      const double t3 = (cD[0][0] + cD[1][1] + cD[2][2]) / 3.0;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) cD[i][j] -= 2.0 * dl * D[i][j] + (i == j ? t3 : 0.0);
+      const double iw2 = 2.0 / in.w2;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          ddl[3 * a + b] =
+              iw2 * (T[3 * a] * cD[0][b] + T[3 * a + 1] * cD[1][b] + T[3 * a + 2] * cD[2][b]);
+    }
+    // grad = rho (a T - b d delta - c K) (+ the d fk term of mu_301), from d ln rho.
+    const double it = 1.0 / tau;
+    double ca = 0, cb = 0, cc = 0;
+    switch (form_) {
+      case Shape3dForm::kBarrier: {
+        // ln rho = ln(f/6 - delta) - ln q^2 - ln P + const, dq^2 = (2/3) q^2 K / tau.
+        const double q2 = in.q2;
+        const double iP = 1.0 / (f * f + 3.0 * f * q2 + 9.0 * q2 * q2), inum = 1.0 / (f / 6.0 - dl);
+        ca = inum / 3.0 - 2.0 * (2.0 * f + 3.0 * q2) * iP;
+        cb = inum;
+        cc = (2.0 / 3.0) * it * (1.0 + (3.0 * f + 18.0 * q2) * q2 * iP);
+        break;
+      }
+      case Shape3dForm::kCubicBarrier: {  // ln rho = ln(f/6 - delta) - ln tau - ln Q + const
+        const double sf = std::sqrt(f);
+        const double iQ = 1.0 / (f * sf + 3.0 * kSqrt3 * tau), inum = 1.0 / (f / 6.0 - dl);
+        ca = inum / 3.0 - 3.0 * sf * iQ;
+        cb = inum;
+        cc = it + 3.0 * kSqrt3 * iQ;
+        break;
+      }
+      case Shape3dForm::kConditionBarrier: {
+        // ln rho = ln(f - 9 delta) - ln tau - ln(g + 3 tau), dg = (fk df + f dfk) / (2 g).
+        double dfk[9];
+        dfk_dT(T, in, dfk);
+        const double g = std::sqrt(f * in.fk);
+        const double iden = 1.0 / (g + 3.0 * tau), inum = 1.0 / (f - 9.0 * dl);
+        const double a = 2.0 * inum - in.fk * iden / g, b = 9.0 * inum, c = it + 3.0 * iden;
+        const double e = 0.5 * f * iden / g;
+        for (int n = 0; n < 9; ++n)
+          grad[n] = rho_value * (a * T[n] - b * ddl[n] - c * K[n] - e * dfk[n]);
+        return;
+      }
+      case Shape3dForm::kConditionSquaredBarrier: {  // rho = (f - 9 delta) / (9 tau^2)
+        const double it2 = it * it / 9.0;
+        for (int n = 0; n < 9; ++n)
+          grad[n] = (2.0 * T[n] - 9.0 * ddl[n]) * it2 - 2.0 * rho_value * K[n] * it;
+        return;
+      }
+      default:
+        for (int n = 0; n < 9; ++n) grad[n] = std::numeric_limits<double>::quiet_NaN();
+        return;
+    }
+    for (int n = 0; n < 9; ++n) grad[n] = rho_value * (ca * T[n] - cb * ddl[n] - cc * K[n]);
+  }
+
+  // r = sqrt(mu) w / |w| = alpha w (shape_3d.h). Far from the minimiser alpha = sqrt(mu / |w|^2)
+  // with the published mu and dr/dT = alpha (I - n n^t) dw/dT + n (dmu/dT)^t / (2 sqrt(mu)),
+  // n = w / |w|; near it alpha = sqrt(rho) and dr/dT = alpha dw/dT + w (d rho/dT)^t / (2 alpha),
+  // with no division by |w| (at w = 0 exactly, r = 0 and dr/dT = alpha dw/dT).
+  bool deviatoric_residuals(const double* T, double* r, double* dr_dT) const {
+    Invariants in;
+    if (!in.compute(T, form_ == Shape3dForm::kBarrier)) return false;
+    const double p = published_mu(in);
+    if (!std::isfinite(p)) return false;
+    const bool near = p < kNear;
+    const double rho_value = near ? rho(in) : 0.0;
+    if (near && !(rho_value > 0.0)) return false;  // cannot happen for tau > 0 (rho >= f/54...)
+    const double alpha = near ? std::sqrt(rho_value) : std::sqrt(p / in.w2);
+    const double* w = in.w;
+    for (int j = 0; j < 5; ++j) r[j] = alpha * w[j];
+    if (dr_dT == nullptr) return true;
+    // dw/dT, row-major per residual: row a of T carries (T_a0, T_a1, T_a2).
+    double* dw = dr_dT;  // filled with dw first, scaled below
+    for (int a = 0; a < 3; ++a) {
+      const double t0 = T[3 * a], t1 = T[3 * a + 1], t2 = T[3 * a + 2];
+      const int i0 = 3 * a, i1 = 3 * a + 1, i2 = 3 * a + 2;
+      // d(M11 - M22)/sqrt2 = sqrt2 (T_a0, -T_a1, 0).
+      dw[i0] = kSqrt2 * t0;
+      dw[i1] = -kSqrt2 * t1;
+      dw[i2] = 0.0;
+      // d(M11 + M22 - 2 M33)/sqrt6 = (2 T_a0, 2 T_a1, -4 T_a2) / sqrt6.
+      dw[9 + i0] = 2.0 * kInvSqrt6 * t0;
+      dw[9 + i1] = 2.0 * kInvSqrt6 * t1;
+      dw[9 + i2] = -4.0 * kInvSqrt6 * t2;
+      // d(sqrt2 M12) = sqrt2 (T_a1, T_a0, 0); M13: (T_a2, 0, T_a0); M23: (0, T_a2, T_a1).
+      dw[18 + i0] = kSqrt2 * t1;
+      dw[18 + i1] = kSqrt2 * t0;
+      dw[18 + i2] = 0.0;
+      dw[27 + i0] = kSqrt2 * t2;
+      dw[27 + i1] = 0.0;
+      dw[27 + i2] = kSqrt2 * t0;
+      dw[36 + i0] = 0.0;
+      dw[36 + i1] = kSqrt2 * t2;
+      dw[36 + i2] = kSqrt2 * t1;
+    }
+    double u[9];  // dr = alpha dw + w u^t
+    if (near) {
+      double grad[9];
+      rho_gradient(T, in, rho_value, grad);
+      const double h = 0.5 / alpha;
+      for (int m = 0; m < 9; ++m) u[m] = h * grad[m];
+    } else {
+      // u = (dmu/dT / (2 s) - alpha n^t dw) / |w| = dmu/dT / (2 s |w|) - alpha w^t dw / |w|^2.
+      double grad[9];
+      mu_gradient(T, in, grad);
+      const double s = std::sqrt(p);
+      const double iws = 0.5 / (s * std::sqrt(in.w2)), aiw2 = alpha / in.w2;
+      for (int m = 0; m < 9; ++m) {
+        double wdw = 0.0;
+        for (int j = 0; j < 5; ++j) wdw += w[j] * dw[9 * j + m];
+        u[m] = iws * grad[m] - aiw2 * wdw;
+      }
+    }
+    for (int j = 0; j < 5; ++j)
+      for (int m = 0; m < 9; ++m) dr_dT[9 * j + m] = alpha * dw[9 * j + m] + w[j] * u[m];
+    return true;
+  }
+
   // r = c F(S); dr/dT = c dF/dS a (I - vec(T) g^t / 3) with g = T^-t = C / tau. F is homogeneous
   // of degree 3/2, so (dF/dS) vec(S) = (3/2) F and dr/dT = c (a dF/dS - F g^t / 2).
   bool cofactor_residuals(double a, double tau, const double* S, const double* C, double* r,

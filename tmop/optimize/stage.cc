@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
@@ -372,6 +373,59 @@ double exact_objective(const Mesh& mesh, const StageSpec& spec,
   return sum / std::max(1, num_elements);
 }
 
+// Spreads the low 21 bits of v to every third bit (Morton interleaving).
+std::uint64_t spread3(std::uint64_t v) {
+  v &= 0x1fffff;
+  v = (v | v << 32) & 0x1f00000000ffffULL;
+  v = (v | v << 16) & 0x1f0000ff0000ffULL;
+  v = (v | v << 8) & 0x100f00f00f00f00fULL;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+  v = (v | v << 2) & 0x1249249249249249ULL;
+  return v;
+}
+
+// The sample points ordered along a Morton (Z-order) curve through their cells' centroids;
+// points of one cell stay together and in order (stable sort).
+std::vector<std::int32_t> locality_order(const Mesh& mesh, const std::vector<std::int32_t>& cell) {
+  const int sd = mesh.space_dim;
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for (int a = 0; a < sd; ++a) {
+    lo[a] = std::numeric_limits<double>::infinity();
+    hi[a] = -lo[a];
+  }
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    for (int a = 0; a < sd; ++a) {
+      lo[a] = std::min(lo[a], mesh.vertex(v)[a]);
+      hi[a] = std::max(hi[a], mesh.vertex(v)[a]);
+    }
+  std::vector<std::uint64_t> key(cell.size());
+  int previous = -1;
+  std::uint64_t previous_key = 0;
+  for (std::size_t p = 0; p < cell.size(); ++p) {
+    const int c = cell[p];
+    if (c != previous) {
+      const int k = cell_info(mesh.cell_type(c)).num_corners;
+      std::uint64_t code = 0;
+      for (int a = 0; a < sd; ++a) {
+        double x = 0;
+        for (int i = 0; i < k; ++i) x += mesh.vertex(mesh.cell(c)[i])[a] / k;
+        const double span = hi[a] - lo[a];
+        const double t = span > 0 ? (x - lo[a]) / span : 0.0;
+        const auto q = static_cast<std::uint64_t>(std::clamp(t, 0.0, 1.0) * 2097151.0);
+        code |= spread3(q) << a;
+      }
+      previous = c;
+      previous_key = code;
+    }
+    key[p] = previous_key;
+  }
+  std::vector<std::int32_t> order(cell.size());
+  for (std::size_t p = 0; p < order.size(); ++p) order[p] = static_cast<std::int32_t>(p);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::int32_t a, std::int32_t b) { return key[a] < key[b]; });
+  return order;
+}
+
 std::string list_cells(const std::vector<int>& cells) {
   std::string s;
   for (std::size_t i = 0; i < cells.size() && i < 10; ++i)
@@ -618,7 +672,12 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   std::vector<int> cost_point;  // sample point of each cost
   std::vector<double*> blocks;
   std::vector<char> in_problem(mesh->num_vertices(), 0);
-  for (std::size_t p = 0; p < P; ++p) {
+  // Residual blocks in space-filling-curve order of their cells: Ceres numbers the parameter
+  // blocks by first appearance, so neighbouring blocks touch neighbouring columns of J and the
+  // products of its CGNR stay in cache (docs/benchmarks.md).
+  const std::vector<std::int32_t> order = locality_order(*mesh, point_cell);
+  for (const std::int32_t pi : order) {
+    const std::size_t p = static_cast<std::size_t>(pi);
     const int c = point_cell[p];
     const int n = mesh->cell_size(c);
     const std::int32_t* nodes = mesh->cell(c);
@@ -701,9 +760,14 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   so.parameter_tolerance = 1e-16;  // movement rule in the callback instead
   so.num_threads = spec.solver.threads > 0 ? spec.solver.threads
                                            : std::max(1u, std::thread::hardware_concurrency());
-  so.logging_type = ceres::SILENT;
-  so.minimizer_progress_to_stdout = false;
+  so.logging_type =
+      std::getenv("TMOP_CERES_PROGRESS") ? ceres::PER_MINIMIZER_ITERATION : ceres::SILENT;
+  so.minimizer_progress_to_stdout = std::getenv("TMOP_CERES_PROGRESS") != nullptr;
   so.update_state_every_iteration = true;
+  // The stage solves in normalised coordinates (unit mean edge length), so the columns of J are
+  // already of one scale: Ceres's Jacobi column scaling would only add two passes over J per
+  // iteration (30 % of an iteration at 100k tets, the same iterates; docs/benchmarks.md).
+  so.jacobi_scaling = false;
   StageCallback callback(mesh, spec, table, frames, free_vertices, shortest, num_elements, result);
   so.callbacks.push_back(&callback);
 
