@@ -75,8 +75,11 @@ DEFINE_double(max_seconds, 1e9, "Wall-clock cap per stage, seconds (shape, untan
 DEFINE_bool(then_shape, false, "untangle: run the shape stage after untangling (recipe auto).");
 DEFINE_string(linear_solver, "auto", "auto, cholesky or cgnr (SolverOptions::LinearSolver).");
 DEFINE_string(solver, "lm", "lm or dogleg.");
-DEFINE_int32(cholesky_max_free_coordinates, 8000,
-             "auto picks sparse Cholesky up to this many free coordinates.");
+DEFINE_int32(cholesky_max_free_coordinates, -1,
+             "auto picks sparse Cholesky up to this many free coordinates in 3D (-1: the library's "
+             "default, SolverOptions::cholesky_max_free_coordinates_3d).");
+DEFINE_double(function_tolerance, -1,
+              "Relative objective decrease that ends a solve (-1: the library's default).");
 DEFINE_bool(verbose, false, "Print the solver's progress lines.");
 DEFINE_string(output, "", "perturb: the perturbed mesh (binary .msh 4.1 when .msh).");
 DEFINE_double(amount, 0.3, "perturb: move length as a fraction of the shortest incident edge.");
@@ -487,7 +490,9 @@ tmop::SolverOptions solver_options(const Context& ctx) {
   so.verbose = FLAGS_verbose;
   tmop::linear_solver_from_name(FLAGS_linear_solver, &so.linear_solver);
   tmop::solver_method_from_name(FLAGS_solver, &so.method);
-  so.cholesky_max_free_coordinates_3d = FLAGS_cholesky_max_free_coordinates;
+  if (FLAGS_cholesky_max_free_coordinates >= 0)
+    so.cholesky_max_free_coordinates_3d = FLAGS_cholesky_max_free_coordinates;
+  if (FLAGS_function_tolerance >= 0) so.function_tolerance = FLAGS_function_tolerance;
   return so;
 }
 

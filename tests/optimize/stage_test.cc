@@ -93,6 +93,7 @@ TEST(BarrierShape, InvariantToScaleRotationAndTranslation) {
     opt.solver.threads = 1;
     opt.solver.linear_solver = SolverOptions::LinearSolver::kSparseCholesky;
     opt.solver.function_tolerance = 0;  // converge on the gradient and movement rules
+    opt.solver.objective_tolerance = 0;
     opt.solver.gradient_tolerance = 1e-13;
     opt.solver.movement_tolerance = 1e-13;
     Mesh ref = base;

@@ -30,11 +30,11 @@ struct SolverOptions {
   };
   Method method = Method::kLevenbergMarquardt;
   LinearSolver linear_solver = LinearSolver::kAuto;
-  // Problems with at most this many free coordinates use sparse Cholesky under kAuto. The
-  // factor's fill-in grows much faster for tets than for triangles, hence two limits: at 36k
-  // free coordinates a tet mesh's factorisation took 5.3 s per iteration against 1.4 s for CGNR
-  // (docs/benchmarks.md).
-  int cholesky_max_free_coordinates_2d = 400000;
+  // Problems with at most this many free coordinates use sparse Cholesky under kAuto. CHOLMOD
+  // (AMD ordering, Debian's ATLAS BLAS) loses to CGNR early: 2D, 10k triangles (20k free
+  // coordinates) 0.21 s vs 0.17 s, 200k triangles 11.2 s vs 4.6 s; 3D fill-in is far worse (36k
+  // free coordinates: 5.4 s per factorisation). docs/benchmarks.md.
+  int cholesky_max_free_coordinates_2d = 20000;
   int cholesky_max_free_coordinates_3d = 4000;
   // CGNR inner iterations per outer step (Ceres's max_linear_solver_iterations).
   int cgnr_max_iterations = 50;
@@ -46,8 +46,16 @@ struct SolverOptions {
 
   int max_iterations = 200;  // outer (Ceres) iterations
   double max_seconds = 1e9;  // wall-clock cap for the stage
-  // Stop when the objective decreases by less than this fraction of itself in a step.
-  double function_tolerance = 1e-7;
+  // Stop when the objective decreases by less than this fraction of itself in a step. 1e-5 ends
+  // within ~1e-4 of the converged objective (100k tets: 9 iterations, mean mu_303 0.191943 vs
+  // 0.191929 fully converged); 1e-7 needs ~3x the iterations, spent mostly on the few worst
+  // elements (min quality 0.36 -> 0.39 there; docs/benchmarks.md).
+  double function_tolerance = 1e-5;
+  // Stop when two successive steps each lower the mean metric value per element by less than
+  // this (metric values are dimensionless: 1e-5 is far below any visible change of quality).
+  // Relative rules alone keep going where the mesh is nearly ideal and the objective tiny
+  // (200k triangles at mean mu ~1e-3). Not applied to untangling rounds. 0 disables it.
+  double objective_tolerance = 1e-5;
   // Stop when the largest gradient entry falls below this fraction of its initial value.
   double gradient_tolerance = 1e-9;
   // Stop when no vertex moves by more than this fraction of its shortest incident edge.

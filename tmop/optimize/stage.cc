@@ -322,6 +322,15 @@ class StageCallback final : public ceres::IterationCallback {
         reason_ = "vertex movement below tolerance (relative to local edge length)";
         return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
       }
+      // The metrics are dimensionless, so the decrease of the mean metric per element is too.
+      // Two in a row, like the movement rule (one may follow a collapsed trust region).
+      const double decrease = 2 * s.cost_change / std::max(1, num_elements_);
+      small_decreases_ =
+          !spec_.untangle && decrease < spec_.solver.objective_tolerance ? small_decreases_ + 1 : 0;
+      if (small_decreases_ >= 2) {
+        reason_ = "mean metric decrease per element below objective_tolerance";
+        return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+      }
     }
     return ceres::SOLVER_CONTINUE;
   }
@@ -347,6 +356,7 @@ class StageCallback final : public ceres::IterationCallback {
   std::vector<double> previous_;
   double initial_gradient_ = 0;
   int small_steps_ = 0;
+  int small_decreases_ = 0;
   std::string reason_;
 };
 
