@@ -152,4 +152,8 @@ bool sample_rule_from_name(const std::string& name, SampleRule* rule) {
 
 const char* sample_rule_name(SampleRule rule) { return kRuleNames[static_cast<int>(rule)]; }
 
+SampleRule validity_rule(SampleRule rule) {
+  return rule == SampleRule::kCentroid || rule == SampleRule::kGauss ? SampleRule::kDefault : rule;
+}
+
 }  // namespace tmop

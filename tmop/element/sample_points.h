@@ -34,6 +34,12 @@ struct SamplePoint {
 // The rule's points for one cell type. The returned reference stays valid for the program's life.
 const std::vector<SamplePoint>& sample_points(CellType type, SampleRule rule);
 
+// The rule whose points decide validity (det J > 0) for cells sampled with `rule`: the rule
+// itself when its points include every corner (default, corners, nodes), else the default rule.
+// A barrier stage or an inverted count that looked only at a centroid or at Gauss points would
+// miss a hex folded at a corner.
+SampleRule validity_rule(SampleRule rule);
+
 // "default", "corners", "nodes", "centroid", "gauss"; false when unknown.
 bool sample_rule_from_name(const std::string& name, SampleRule* rule);
 const char* sample_rule_name(SampleRule rule);

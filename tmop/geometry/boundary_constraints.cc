@@ -40,17 +40,23 @@ BoundaryConstraints::~BoundaryConstraints() = default;
 Status BoundaryConstraints::Build(const Mesh& mesh, const BoundaryOptions& options,
                                   std::unique_ptr<BoundaryConstraints>* out) {
   std::unique_ptr<BoundaryConstraints> bc(new BoundaryConstraints());
-  ClassifyOptions classify;
-  classify.feature_angle_deg = options.feature_angle_deg;
-  classify.boundary_tags = options.boundary_tags;
-  Status s = classify_boundary(mesh, classify, &bc->classification_);
-  if (!s.ok()) return s;
   GeometrySource source;
-  s = load_geometry_source(options.geometry, &source, options.geometry_frame);
+  Status s = load_geometry_source(options.geometry, &source, options.geometry_frame);
   if (!s.ok()) return s;
   const int dim = mesh.dim();
   const int space = mesh.space_dim;
   const bool surface_mesh = dim == 2 && space == 3;
+  ClassifyOptions classify;
+  classify.feature_angle_deg = options.feature_angle_deg;
+  // A surface mesh on a smooth analytic surface has no feature edges of its own: the angles
+  // between its facets are discretisation (a coarse or perturbed sphere has facets meeting at
+  // more than 30 degrees), and fixing them as corners would cap its quality. Its open boundary
+  // curves, if any, are still curves.
+  if (surface_mesh && source.kind == GeometrySourceKind::kAnalytic)
+    classify.feature_angle_deg = 179.9;
+  classify.boundary_tags = options.boundary_tags;
+  s = classify_boundary(mesh, classify, &bc->classification_);
+  if (!s.ok()) return s;
   if (source.surface && space != 3) {
     return Status::Failure("geometry '" + options.geometry + "': a 2D mesh has no surfaces");
   }

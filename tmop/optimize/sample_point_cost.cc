@@ -78,8 +78,29 @@ bool SamplePointCost::EvaluateFixed(double const* const* x, double* residuals,
   return true;
 }
 
+bool SamplePointCost::guard_ok(double const* const* x_in) const {
+  const int d = dim_, n = num_nodes_;
+  double y[kMaxSurfaceNodes * 2];
+  const double* yp[kMaxSurfaceNodes];
+  double const* const* x = frame_ ? tangent_coordinates(x_in, y, yp) : x_in;
+  for (int k = 0; k < guard_count_; ++k) {
+    const double* G = guard_ + k * n * d;
+    double A[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    for (int i = 0; i < n; ++i)
+      for (int a = 0; a < d; ++a)
+        for (int b = 0; b < d; ++b) A[a * d + b] += x[i][a] * G[i * d + b];
+    const double det = d == 2 ? A[0] * A[3] - A[1] * A[2]
+                              : A[0] * (A[4] * A[8] - A[5] * A[7]) -
+                                    A[1] * (A[3] * A[8] - A[5] * A[6]) +
+                                    A[2] * (A[3] * A[7] - A[4] * A[6]);
+    if (!(det > 0)) return false;
+  }
+  return true;
+}
+
 bool SamplePointCost::Evaluate(double const* const* x_in, double* residuals,
                                double** jacobians) const {
+  if (guard_ && !guard_ok(x_in)) return false;
   if (!frame_) {
     if (dim_ == 3) {
       if (num_nodes_ == 4) return EvaluateFixed<3, 4>(x_in, residuals, jacobians);

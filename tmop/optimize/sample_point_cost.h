@@ -34,6 +34,15 @@ class SamplePointCost final : public ceres::CostFunction {
   void set_surface_frame(const double* F);
   bool Evaluate(double const* const* x, double* residuals, double** jacobians) const override;
 
+  // Validity guard: Evaluate fails unless det(sum_i x_i g_ki^T) > 0 at each of `count` extra
+  // points k, g_ki = guard[(k * num_nodes + i) * d ...] (any G = W^-T grad N with det W > 0
+  // gives the sign of det A). A barrier stage sampled at centroids or Gauss points sets the
+  // cell's corners here on one block per cell, so that it cannot fold a corner. Not owned.
+  void set_guard(const double* guard, int count) {
+    guard_ = guard;
+    guard_count_ = count;
+  }
+
   // Multiplies every term's weight by m >= 0 (the power-mean reweighting of stage.cc).
   void set_weight_multiplier(double m);
   // Replaces term t's metric by one with the same residual count (the untangler's eps schedule).
@@ -44,6 +53,7 @@ class SamplePointCost final : public ceres::CostFunction {
  private:
   double const* const* tangent_coordinates(double const* const* x, double* y,
                                            const double** yp) const;
+  bool guard_ok(double const* const* x) const;
   template <int D, int N>
   bool EvaluateFixed(double const* const* x, double* residuals, double** jacobians) const;
 
@@ -53,6 +63,8 @@ class SamplePointCost final : public ceres::CostFunction {
   int num_terms_;
   SamplePointTerm terms_[kMaxTerms];
   double sqrt_multiplier_ = 1.0;
+  const double* guard_ = nullptr;
+  int guard_count_ = 0;
 };
 
 }  // namespace tmop

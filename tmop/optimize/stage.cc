@@ -181,8 +181,7 @@ struct IdealTable {
   }
 };
 
-IterationRecord measure(const Mesh& mesh, SampleRule rule, const IdealTable& table,
-                        const Frames& frames) {
+IterationRecord measure(const Mesh& mesh, const IdealTable& table, const Frames& frames) {
   IterationRecord rec;
   const int d = mesh.dim();
   rec.min_quality = std::numeric_limits<double>::infinity();
@@ -203,6 +202,27 @@ IterationRecord measure(const Mesh& mesh, SampleRule rule, const IdealTable& tab
   }
   if (!std::isfinite(rec.min_quality)) rec.min_quality = 0;
   return rec;
+}
+
+// The cells measure() counts as inverted.
+std::vector<int> inverted_cells(const Mesh& mesh, const IdealTable& table, const Frames& frames) {
+  std::vector<int> out;
+  const int d = mesh.dim();
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!mesh.is_element(c, d)) continue;
+    const CellType t = mesh.cell_type(c);
+    const int n = cell_num_nodes(t);
+    const std::vector<double>& G = table.G[static_cast<int>(t)];
+    for (std::size_t off = 0; off < G.size(); off += n * d) {
+      double T[9];
+      compute_T(n, d, mesh, mesh.cell(c), G.data() + off, T, frames.cell(c));
+      if (!(det_d(T, d) > 0)) {
+        out.push_back(c);
+        break;
+      }
+    }
+  }
+  return out;
 }
 
 // Translation and scale that make the problem dimensionless: x' = (x - centre) / length.
@@ -274,7 +294,7 @@ class StageCallback final : public ceres::IterationCallback {
     const bool report = spec_.solver.verbose || static_cast<bool>(spec_.solver.progress);
     IterationRecord rec;
     if (report) {
-      rec = measure(*mesh_, spec_.rule, table_, frames_);
+      rec = measure(*mesh_, table_, frames_);
     } else {
       rec.min_quality = std::numeric_limits<double>::quiet_NaN();
       rec.inverted = -1;
@@ -495,8 +515,8 @@ void from_frame(const CoordinateFrame& frame, Mesh* mesh) {
 IterationRecord measure_mesh(const Mesh& mesh, SampleRule rule) {
   const int d = mesh.dim();
   if (d < 2 || (mesh.space_dim != d && d != 2)) return IterationRecord();
-  IdealTable table(rule, d);
-  return measure(mesh, rule, table, own_frames(mesh));
+  IdealTable table(validity_rule(rule), d);
+  return measure(mesh, table, own_frames(mesh));
 }
 
 Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
@@ -533,8 +553,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   if (static_cast<int>(fixed.size()) != mesh->num_vertices())
     return Status::Failure("fixed-vertex flags: one per vertex expected");
 
-  // Sample points: the rule's canonical set, then the stage's extra points.
-  SampleSet points = canonical_sample_set(*mesh, spec.rule);
+  // Sample points: the rule's canonical set, then the stage's extra points. Untangling always
+  // samples at the corners (validity_rule): an energy that sees only centroids or Gauss points
+  // cannot unfold a corner.
+  const SampleRule rule = spec.untangle ? validity_rule(spec.rule) : spec.rule;
+  SampleSet points = canonical_sample_set(*mesh, rule);
   for (std::size_t k = 0; k < spec.extra_points.size(); ++k) {
     const int c = spec.extra_points.cell[k];
     if (c < 0 || c >= mesh->num_cells() || !mesh->is_element(c, d))
@@ -635,8 +658,10 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     }
   }
 
-  IdealTable table(spec.rule, d);
-  const IterationRecord before = measure(*mesh, spec.rule, table, frames);
+  // Validity (inverted counts, the barrier's start check) is judged at points that include
+  // every corner, whatever the stage samples (validity_rule).
+  IdealTable table(validity_rule(spec.rule), d);
+  const IterationRecord before = measure(*mesh, table, frames);
   result->inverted_before = before.inverted;
   result->min_quality_before = before.min_quality;
   bool barrier = false;
@@ -646,6 +671,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
 
   std::vector<int> bad;
   result->min_det_before = min_target_det(*mesh, point_cell, G[0], g_offset, &bad, frames);
+  if (barrier && bad.empty() && before.inverted > 0) bad = inverted_cells(*mesh, table, frames);
   if (barrier && !bad.empty())
     return fail("barrier metric on an inverted mesh (untangle first): inverted cells " +
                 list_cells(bad));
@@ -678,6 +704,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   popts.disable_all_safety_checks = true;
   popts.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;  // BoundaryConstraints owns them
   ceres::Problem problem(popts);
+  // Barrier stages sampled away from the corners guard the corners (SamplePointCost::set_guard).
+  const bool guard = barrier && validity_rule(rule) != rule;
   std::deque<SamplePointCost> costs;
   std::vector<int> cost_point;  // sample point of each cost
   std::vector<double*> blocks;
@@ -709,6 +737,10 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     }
     costs.emplace_back(n, d, nt, terms);
     if (surface) costs.back().set_surface_frame(frames.cell(c));
+    if (guard && (p == 0 || point_cell[p - 1] != c)) {  // one guarded block per cell
+      const std::vector<double>& g = table.G[static_cast<int>(mesh->cell_type(c))];
+      costs.back().set_guard(g.data(), static_cast<int>(g.size()) / (n * d));
+    }
     cost_point.push_back(static_cast<int>(p));
     blocks.clear();
     for (int i = 0; i < n; ++i) {
@@ -859,7 +891,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   }
 
   // Ceres leaves the best parameters in place; the callback may have seen a later state.
-  const IterationRecord after = measure(*mesh, spec.rule, table, frames);
+  const IterationRecord after = measure(*mesh, table, frames);
   result->min_det_after =
       min_target_det(*mesh, point_cell, G[0], g_offset, &result->inverted_cells, frames);
   result->inverted_after = after.inverted;

@@ -106,8 +106,9 @@ struct StageResult {
 Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result);
 
 // The worst shape quality and the inverted count of a mesh, measured exactly as the progress
-// line measures them (sample points of `rule`; quality = d det(T)^(2/d) / |T|^2 with T relative
-// to the ideal element: the mean ratio for simplices).
+// line measures them (sample points of validity_rule(rule), which include every corner;
+// quality = d det(T)^(2/d) / |T|^2 with T relative to the ideal element: the mean ratio for
+// simplices).
 IterationRecord measure_mesh(const Mesh& mesh, SampleRule rule);
 
 }  // namespace tmop

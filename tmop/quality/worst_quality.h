@@ -6,12 +6,17 @@
 #ifndef TMOP_QUALITY_WORST_QUALITY_H_
 #define TMOP_QUALITY_WORST_QUALITY_H_
 
+#include <vector>
+
 #include "tmop/mesh/mesh.h"
 
 namespace tmop {
 
 // threads: as QualityOptions::threads (0 = all cores).
 double worst_quality(const Mesh& mesh, int threads = 0);
+
+// The same measure per cell (num_cells() values; NaN for cells that are not elements).
+std::vector<double> cell_headline_quality(const Mesh& mesh, int threads = 0);
 
 }  // namespace tmop
 

@@ -1,8 +1,12 @@
 #include "tmop/recipes/improve_shape.h"
 
 #include <chrono>
+#include <cmath>
+#include <limits>
 
+#include "tmop/mesh/topology.h"
 #include "tmop/metric/power_mean.h"
+#include "tmop/quality/worst_quality.h"
 
 namespace tmop {
 
@@ -38,19 +42,32 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
                                       &own, &geometry);
   if (!gs.ok()) return gs;
   const std::vector<double> original = mesh->coords;
-  double power = options.power;
-  for (int attempt = 0; attempt < 3; ++attempt) {
+  const int threads = options.solver.threads;
+  std::vector<double> q_before;
+  double worst_before = 0;
+  if (options.guard_worst) {
+    q_before = cell_headline_quality(*mesh, threads);
+    worst_before = std::numeric_limits<double>::infinity();
+    for (double q : q_before)
+      if (!std::isnan(q)) worst_before = std::min(worst_before, q);
+  }
+  // Vertices held fixed: the caller's, else the boundary (stage.h); the guard adds to them.
+  std::vector<char> fixed = options.fixed;
+  if (fixed.empty())
+    fixed = geometry ? std::vector<char>(mesh->num_vertices(), 0) : boundary_vertex_mask(*mesh);
+  int held_cells = 0;
+  for (int round = 0; round <= options.guard_rounds; ++round) {
     std::string error;
     StageSpec stage;
-    stage.name = attempt == 0 ? "shape" : "shape (power " + std::to_string(int(power)) + ")";
+    stage.name = round == 0 ? "shape" : "shape (guard round " + std::to_string(round) + ")";
     stage.rule = options.rule;
     stage.extra_points = options.extra_points;
-    stage.fixed = options.fixed;
+    stage.fixed = fixed;
     stage.solver = options.solver;
     if (geometry) geometry->apply(&stage);
     TermSpec term;
     term.metric = recipe_metric(options.metric, d, 1.0, &error);
-    stage.power = power;
+    stage.power = options.power;
     if (!term.metric) return Status::Failure(error);
     term.target = options.target;
     stage.terms.push_back(term);
@@ -59,16 +76,35 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
     if (!s.ok()) return s;
     result->stages.push_back(sr);
     result->after = measure_mesh(*mesh, options.rule);
-    if (!options.guard_worst || result->after.min_quality >= result->before.min_quality) break;
-    // The worst element got worse: weight the worst elements up and start again.
+    if (!options.guard_worst) break;
+    // Cells that fell below the input's worst quality are held at their input shape: their
+    // vertices join the fixed set and the stage solves again from the input. Every input cell
+    // is at least as good as the input's worst, so held cells cannot violate; the set only
+    // grows, so this ends (at worst with the input itself).
+    const std::vector<double> q = cell_headline_quality(*mesh, threads);
+    int violators = 0, newly_fixed = 0;
+    for (int c = 0; c < mesh->num_cells(); ++c) {
+      if (std::isnan(q[c]) || q[c] >= worst_before - options.guard_tolerance) continue;
+      ++violators;
+      for (int i = 0; i < mesh->cell_size(c); ++i) {
+        char& f = fixed[mesh->cell(c)[i]];
+        newly_fixed += !f;
+        f = 1;
+      }
+    }
+    if (violators == 0) break;
+    held_cells += violators;
     mesh->coords = original;
     result->after = result->before;
-    power = power < 2 ? 2 : power * 2;
-    if (attempt == 2) {
-      result->stages.back().termination +=
-          "; worst element would get worse at every power tried: input mesh kept";
+    if (newly_fixed == 0 || round == options.guard_rounds) {
+      result->stages.back().termination += "; the worst element would get worse: input mesh kept";
+      break;
     }
+    result->stages.back().termination += "; worst-element guard: " + std::to_string(violators) +
+                                         " cells below the input's worst quality, " +
+                                         std::to_string(newly_fixed) + " vertices held";
   }
+  (void)held_cells;
   result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
 }

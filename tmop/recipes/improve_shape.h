@@ -6,9 +6,11 @@
 // The objective is the plain mean of the shape metric (power 1): one Ceres solve, and the
 // result is exactly invariant to translation and scaling and to rotation up to the solver
 // tolerance. A plain mean can let the worst element get worse while the average improves, so
-// the recipe checks the worst element afterwards: if it got worse, it solves again from the
-// input with the worst elements weighted up (power 2, then 4; StageSpec::power), and it never
-// returns a mesh whose worst element is worse than the input's (it keeps the input then).
+// the recipe checks every cell afterwards against the input's worst quality (the minimum
+// tmop_quality prints: mean ratio for simplices, scaled Jacobian otherwise): cells that fell
+// below it are held at their input shape (their vertices fixed) and the stage solves again from
+// the input, until no cell is below (guard_rounds at most; then the input is kept). So the
+// worst element never gets worse, and the rest of the mesh keeps its improvement.
 #ifndef TMOP_RECIPES_IMPROVE_SHAPE_H_
 #define TMOP_RECIPES_IMPROVE_SHAPE_H_
 
@@ -25,15 +27,21 @@ namespace tmop {
 
 struct ShapeOptions {
   // Metric name (metric_names()); empty picks the default shape barrier metric of the
-  // dimension: shape_barrier_2d in 2D, shape_3d (|T|^2 / (3 tau^(2/3)) - 1) in 3D.
+  // dimension: shape_barrier_2d (mu_2) in 2D, shape_barrier_3d (mu_303,
+  // |T|^2 / (3 tau^(2/3)) - 1) in 3D.
   std::string metric;
   TargetSpec target;  // default: ideal shape, equal size (size does not matter to shape)
   SampleRule rule = SampleRule::kDefault;
   SampleSet extra_points;  // appended to the rule's points (see StageSpec::extra_points)
-  // Power order p >= 1 of the first solve (1 = plain mean; see StageSpec::power).
+  // Power order p >= 1 (1 = plain mean; see StageSpec::power).
   double power = 1.0;
-  // Never return a mesh whose worst element is worse than the input's.
+  // Never return a mesh whose worst element is worse than the input's: no cell's headline
+  // quality (mean ratio for simplices, scaled Jacobian for the other types) may end below the
+  // input's minimum by more than guard_tolerance (absolute; qualities are in (0, 1]). Cells that
+  // would are held at their input shape, at most guard_rounds re-solves (see above).
   bool guard_worst = true;
+  double guard_tolerance = 1e-6;
+  int guard_rounds = 4;
   std::vector<char> fixed;  // per-vertex flags; empty = boundary fixed (or sliding, below)
   // Boundary vertices slide on their curves and surfaces (corners stay fixed): the input's own
   // boundary, or boundary.geometry. Surface meshes always slide on their surface.
