@@ -62,6 +62,7 @@
 #include "tmop/recipes/recipe_result.h"
 #include "tmop/recipes/untangle.h"
 #include "tmop/target/target.h"
+#include "tools/parse_flags.h"
 
 DEFINE_string(input, "", "Input mesh (any format read_mesh reads).");
 DEFINE_string(task, "shape", "read, quality, shape, untangle, evaluate, floor or perturb.");
@@ -743,7 +744,7 @@ int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "reproducible speed/scale runs with a JSON record\n"
       "  tmop_bench --input=MESH --task=shape|untangle|read|quality|evaluate|floor|perturb");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  tmop_tools::parse_flags(&argc, &argv);
   FLAGS_minloglevel = FLAGS_verbose ? 1 : 3;
   google::InitGoogleLogging(argv[0]);
   if (FLAGS_input.empty()) return fail(2, "--input is required (see --help)");

@@ -37,6 +37,7 @@
 #include "tmop/quality/quality_json.h"
 #include "tmop/quality/quality_report.h"
 #include "tmop/quality/quality_svg.h"
+#include "tools/parse_flags.h"
 
 DEFINE_string(a, "", "First mesh (or the first positional argument).");
 DEFINE_string(b, "", "Second mesh, same vertices and cells as A (or the second positional one).");
@@ -294,7 +295,7 @@ int main(int argc, char** argv) {
   }
   std::string error;
   if (!flags_known(argc, argv, &error)) return fail(error);
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  tmop_tools::parse_flags(&argc, &argv);
   std::vector<std::string> positional(argv + 1, argv + argc);
   if (!positional.empty() && FLAGS_a.empty())
     FLAGS_a = positional[0], positional.erase(positional.begin());

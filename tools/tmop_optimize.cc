@@ -21,6 +21,7 @@
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/orientation.h"
 #include "tmop/mesh/validate.h"
+#include "tmop/metric/metric.h"
 #include "tmop/quality/quality_json.h"
 #include "tmop/quality/quality_report.h"
 #include "tmop/recipes/equal_edge.h"
@@ -30,6 +31,7 @@
 #include "tmop/recipes/size_adapt.h"
 #include "tmop/recipes/sliver.h"
 #include "tmop/recipes/untangle.h"
+#include "tools/parse_flags.h"
 
 DEFINE_string(input, "", "Input mesh (.msh .vtk .vtu .mesh .obj .off .ply .stl).");
 DEFINE_string(output, "", "Output mesh; format by extension. Written only on success.");
@@ -43,7 +45,8 @@ DEFINE_string(recipe, "auto",
               "slivers, keep the boundary layer (slides by default); high_order: quadratic "
               "meshes, untangle + shape + Bernstein certificate (the same as auto).");
 DEFINE_bool(write_on_failure, false,
-            "When untangling fails, still write the best mesh reached to --output.");
+            "When the recipe fails (e.g. cannot untangle or certify), still write --output: the "
+            "result if it has fewer inverted cells than the input, else the input; exit 1.");
 DEFINE_string(metric, "", "Metric name (default: the recipe's); see --list_metrics.");
 DEFINE_bool(list_metrics, false, "Print the metric names for 2D and 3D meshes and exit.");
 DEFINE_string(target, "equal_size",
@@ -142,8 +145,9 @@ std::string run_report(const tmop::RecipeResult& result, const tmop::QualityRepo
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "improve a mesh by node movement\n"
-      "  tmop_optimize --input=IN --output=OUT [--recipe=auto|shape] [flags]");
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
+      "  tmop_optimize --input=IN --output=OUT [--recipe=auto|shape|untangle|surface|sliver|"
+      "equal_edge|size_adapt|preserve|laplace|high_order] [flags]");
+  tmop_tools::parse_flags(&argc, &argv);
   // Ceres reports through glog; the tool reports itself (one line on failure).
   FLAGS_minloglevel = FLAGS_verbose ? 1 : 3;
   google::InitGoogleLogging(argv[0]);
@@ -165,6 +169,13 @@ int main(int argc, char** argv) {
     return fail(2, "unknown --recipe '" + FLAGS_recipe +
                        "' (known: auto, shape, untangle, surface, equal_edge, size_adapt, "
                        "preserve, laplace, sliver, high_order)");
+  if (FLAGS_max_iterations < 0) return fail(2, "--max_iterations must be >= 0");
+  if (!(FLAGS_max_seconds > 0)) return fail(2, "--max_seconds must be > 0");
+  if (!(FLAGS_function_tolerance >= 0)) return fail(2, "--function_tolerance must be >= 0");
+  if (FLAGS_threads < 0) return fail(2, "--threads must be >= 0 (0: all cores)");
+  if (!(FLAGS_power >= 1)) return fail(2, "--power must be >= 1");
+  if (!(FLAGS_feature_angle > 0 && FLAGS_feature_angle < 180))
+    return fail(2, "--feature_angle must be in (0, 180) degrees");
   if (FLAGS_boundary != "fixed" && FLAGS_boundary != "slide")
     return fail(2, "--boundary must be fixed or slide, not '" + FLAGS_boundary + "'");
   // Recipes surface and sliver slide by default (their definitions); the others keep the
@@ -202,6 +213,12 @@ int main(int argc, char** argv) {
   if (!s.ok()) return fail(2, s.message());
   s = validate_mesh(mesh);
   if (!s.ok()) return fail(2, FLAGS_input + ": " + s.message());
+  if (!FLAGS_metric.empty() && !make_metric(FLAGS_metric, mesh.dim())) {
+    std::string known;
+    for (const std::string& n : metric_names(mesh.dim())) known += (known.empty() ? "" : ", ") + n;
+    return fail(2, "unknown --metric '" + FLAGS_metric + "' for " + std::to_string(mesh.dim()) +
+                       "D meshes (known: " + known + ")");
+  }
   Mesh reference;
   if (!FLAGS_reference.empty()) {
     s = read_mesh(FLAGS_reference, &reference);
@@ -236,8 +253,12 @@ int main(int argc, char** argv) {
 
   RecipeResult result;
   const IterationRecord before = measure_mesh(mesh, opt.rule);
-  const QualityReport quality_before = print_quality("before:", mesh);
-  bool write_anyway = false;
+  // --write_on_failure writes the better of the input and the recipe's result (fewer inverted
+  // cells; the input on a tie).
+  Mesh input_copy;
+  if (FLAGS_write_on_failure) input_copy = mesh;
+  QualityReport quality_before = print_quality("before:", mesh);
+  quality_before.opposite_convention = flipped;  // as tmop_quality reports the input
   if ((FLAGS_recipe == "shape" || FLAGS_recipe == "equal_edge" || FLAGS_recipe == "size_adapt" ||
        FLAGS_recipe == "laplace") &&
       before.inverted > 0)
@@ -307,14 +328,30 @@ int main(int argc, char** argv) {
     u.boundary = opt.boundary;
     u.shape = opt;
     s = untangle(&mesh, u, &result);
-    write_anyway = !s.ok() && FLAGS_write_on_failure && !result.stages.empty();
   }
   for (const StageResult& st : result.stages)
     std::printf("stage %s: objective %.6g -> %.6g in %d iterations (%d solves), %.2f s (%s)\n",
                 st.name.c_str(), st.initial_objective, st.final_objective, st.iterations, st.solves,
                 st.seconds, st.termination.c_str());
-  if (!s.ok() && !write_anyway) return fail(1, FLAGS_input + ": " + s.message());
-  const QualityReport quality_after = print_quality("after:", mesh);
+  const Status recipe_status = s;
+  if (!recipe_status.ok() && !FLAGS_write_on_failure)
+    return fail(1, FLAGS_input + ": " + recipe_status.message());
+  std::string written_note;
+  if (!recipe_status.ok()) {
+    const IterationRecord now = measure_mesh(mesh, opt.rule);
+    if (now.inverted >= before.inverted && mesh.coords != input_copy.coords) {
+      mesh = input_copy;
+      written_note = "input written unchanged: the result had " + std::to_string(now.inverted) +
+                     " inverted cells, the input " + std::to_string(before.inverted);
+    } else {
+      written_note = mesh.coords == input_copy.coords
+                         ? "input written unchanged"
+                         : "best mesh written: " + std::to_string(now.inverted) +
+                               " inverted cells, the input had " + std::to_string(before.inverted);
+    }
+  }
+  QualityReport quality_after = print_quality("after:", mesh);
+  quality_after.opposite_convention = flipped;  // written back in the input's convention
   if (result.certified >= 0)
     std::printf("certified valid everywhere (Bernstein bound): %d of %d quadratic cells\n",
                 result.certified, result.certified + result.uncertified);
@@ -328,6 +365,7 @@ int main(int argc, char** argv) {
   if (!FLAGS_report.empty() &&
       !write_text_atomically(FLAGS_report, run_report(result, quality_before, quality_after)))
     return fail(2, FLAGS_report + ": cannot write the report");
-  if (write_anyway) return fail(1, FLAGS_input + ": " + s.message() + " (best mesh written)");
+  if (!recipe_status.ok())
+    return fail(1, FLAGS_input + ": " + recipe_status.message() + " (" + written_note + ")");
   return 0;
 }

@@ -17,6 +17,7 @@
 #include "tmop/quality/quality_report.h"
 #include "tmop/quality/quality_summary.h"
 #include "tmop/quality/quality_svg.h"
+#include "tools/parse_flags.h"
 
 DEFINE_string(input, "",
               "Mesh to measure (required). Format by extension: .msh (Gmsh 2.2/4.1), .vtk, .vtu, "
@@ -114,7 +115,7 @@ int main(int argc, char** argv) {
   }
   std::string error;
   if (!check_command_line(argc, argv, &error)) return fail(kUsageError, error);
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
+  tmop_tools::parse_flags(&argc, &argv);
   if (FLAGS_input.empty()) return fail(kUsageError, "--input is required (see --help)");
   tmop::QualityOptions options;
   if (!tmop::sample_rule_from_name(FLAGS_sample_rule, &options.sample_rule))

@@ -11,6 +11,7 @@
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/fold_check.h"
 #include "tmop/mesh/orientation.h"
+#include "tmop/quality/quality_report.h"
 
 namespace tmop {
 namespace {
@@ -36,6 +37,26 @@ TEST(OppositeOrientation, MeditTetMeshIsImprovedAndKeepsItsConvention) {
   EXPECT_TRUE(folded_facets(result).empty());
   EXPECT_NE(result.coords, mesh.coords);  // interior vertices moved
   std::system(("rm -rf " + std::string(dir)).c_str());
+}
+
+// tmop_quality's report (and so tmop_compare's) measures such a mesh in its own convention: the
+// same numbers as for the mesh in Gmsh's convention, and it says so.
+TEST(OppositeOrientation, QualityReportMeasuresInTheMeshsConvention) {
+  Mesh mesh = testing_grid::grid(CellType::kTet4, 3);
+  std::mt19937 rng(4);
+  testing_grid::perturb(&mesh, 3, 0.3, &rng);
+  const QualityReport own = compute_quality(mesh);
+  EXPECT_FALSE(own.opposite_convention);
+  Mesh flipped = mesh;
+  reorient(&flipped);
+  const QualityReport r = compute_quality(flipped);
+  EXPECT_TRUE(r.opposite_convention);
+  EXPECT_EQ(r.inverted_cells, 0);
+  EXPECT_EQ(r.mean_ratio.min, own.mean_ratio.min);
+  EXPECT_EQ(r.mean_ratio.mean, own.mean_ratio.mean);
+  QualityOptions as_stored;
+  as_stored.detect_convention = false;
+  EXPECT_EQ(compute_quality(flipped, as_stored).inverted_cells, flipped.num_elements());
 }
 
 }  // namespace

@@ -147,6 +147,10 @@ double min_target_det(const Mesh& mesh, const std::vector<std::int32_t>& point_c
     worst = std::min(worst, det);
     if (bad && !(det > 0) && (bad->empty() || bad->back() != c)) bad->push_back(c);
   }
+  if (bad) {  // extra points come after the canonical ones: a cell can appear twice
+    std::sort(bad->begin(), bad->end());
+    bad->erase(std::unique(bad->begin(), bad->end()), bad->end());
+  }
   return worst;
 }
 
@@ -822,6 +826,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     result->iterations += static_cast<int>(summary.iterations.size()) - 1;
     return summary.termination_type != ceres::FAILURE;
   };
+  int untangle_rounds = 0;
   const int frame_rounds = surface ? std::max(1, spec.surface_frame_rounds) : 1;
   for (int frame_round = 0; frame_round < frame_rounds; ++frame_round) {
     if (frame_round > 0) {
@@ -846,6 +851,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                                  ? 0
                                  : spec.untangle_max_rounds;
       for (int round = 0; round < max_rounds; ++round) {
+        untangle_rounds = round + 1;
         metrics.push_back(std::make_unique<UntangleMetric>(d, eps, theta));
         for (SamplePointCost& cost : costs) cost.set_metric(0, metrics.back().get());
         if (!solve()) return fail("solver failed: " + summary.message);
@@ -899,6 +905,16 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   result->final_objective =
       exact_objective(*mesh, spec, G, g_offset, point_cell, point_weight, num_elements, frames);
   result->termination = callback.reason().empty() ? summary.message : callback.reason();
+  if (spec.untangle) {
+    char eps_text[32];
+    std::snprintf(eps_text, sizeof eps_text, "%.3g", result->final_eps);
+    result->termination =
+        result->inverted_cells.empty()
+            ? (untangle_rounds == 0 ? std::string("nothing inverted: no untangling needed")
+                                    : "untangled in " + std::to_string(untangle_rounds) +
+                                          " eps rounds (final eps " + eps_text + ")")
+            : "still inverted after " + std::to_string(untangle_rounds) + " eps rounds";
+  }
   norm.undo(mesh);
   // Mapping back is not bit-exact; vertices that were never free keep their input coordinates.
   for (int v = 0; v < mesh->num_vertices(); ++v)

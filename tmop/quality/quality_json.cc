@@ -98,6 +98,7 @@ std::string quality_json(const QualityReport& r) {
   w.field("dim", integer(r.dim));
   w.field("space_dim", integer(r.space_dim));
   w.field("planar", r.planar ? "true" : "false");
+  w.field("opposite_convention", r.opposite_convention ? "true" : "false");
   w.field("vertices", integer(r.num_vertices));
   w.field("elements", integer(r.num_elements));
   w.open("cells");

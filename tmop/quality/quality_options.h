@@ -35,6 +35,12 @@ struct QualityOptions {
   // them NaN; count_inverted and worst_quality turn them off.
   bool angles = true;
 
+  // Meshes written in the opposite orientation convention (most elements negative: some
+  // generators and formats, mesh/orientation.h) are measured in their own convention, so that
+  // they are not reported as all inverted; QualityReport::opposite_convention says so. Off:
+  // measure every cell as stored.
+  bool detect_convention = true;
+
   // Worker threads of compute_quality; 0 = std::thread::hardware_concurrency(). The results,
   // including every sum, are identical for every thread count.
   int threads = 0;

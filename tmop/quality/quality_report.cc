@@ -3,6 +3,7 @@
 #include <cmath>
 #include <utility>
 
+#include "tmop/mesh/orientation.h"
 #include "tmop/quality/cell_quality.h"
 #include "tmop/quality/element_scan.h"
 #include "tmop/quality/topology_caps.h"
@@ -42,6 +43,15 @@ std::vector<const QualityMeasure*> QualityReport::measures() const {
 }
 
 QualityReport compute_quality(const Mesh& mesh, const QualityOptions& options) {
+  if (options.detect_convention && check_orientation(mesh).opposite_convention()) {
+    Mesh own = mesh;
+    reorient(&own);
+    QualityOptions as_stored = options;
+    as_stored.detect_convention = false;
+    QualityReport r = compute_quality(own, as_stored);
+    r.opposite_convention = true;
+    return r;
+  }
   QualityReport r;
   const int d = mesh.dim();
   const std::int64_t n = mesh.num_cells();

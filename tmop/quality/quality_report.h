@@ -32,6 +32,9 @@ struct QualityReport {
   int dim = 0;          // mesh.dim(): dimension of the measured elements
   int space_dim = 0;    // mesh.space_dim
   bool planar = false;  // 2D cells oriented by +z (see above)
+  // The mesh uses the opposite orientation convention and was measured in it (every cell
+  // reoriented first; QualityOptions::detect_convention).
+  bool opposite_convention = false;
   std::int64_t num_vertices = 0;
   std::int64_t num_cells = 0;                  // all cells
   std::int64_t num_elements = 0;               // measured cells

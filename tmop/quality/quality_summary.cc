@@ -37,6 +37,8 @@ std::string quality_summary(const QualityReport& r) {
            r.elements_by_type[t]);
   }
   out += types.empty() ? "\n" : " (" + types + ")\n";
+  if (r.opposite_convention)
+    out += "orientation: opposite convention (most cells negative); measured in that convention\n";
   append(&out, "inverted: %" PRId64, r.inverted_cells);
   if (r.certifiable_cells > 0)
     append(&out, "   certified valid: %" PRId64 " of %" PRId64, r.certified_cells,

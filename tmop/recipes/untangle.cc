@@ -140,6 +140,15 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
                            " quadratic cells are inverted between their sample points "
                            "(Bernstein certificate): " +
                            cell_list(proven_inverted));
+  // A quadratic cell whose Bernstein bound stays non-positive after every certification round
+  // is not known to be valid: the recipe promises certified output, so that is a failure.
+  if (!uncertified.empty())
+    return Status::Failure(std::to_string(uncertified.size()) + " of " +
+                           std::to_string(with_certificate) +
+                           " quadratic cells could not be certified valid (Bernstein bound of "
+                           "det J) after " +
+                           std::to_string(options.certify_rounds) +
+                           " certification rounds: " + cell_list(uncertified));
   return Status::Ok();
 }
 

@@ -1,0 +1,83 @@
+// tmop_optimize's exit-code contract (README): 0 success, 1 the optimization cannot reach its
+// goal, 2 bad input or usage, always one line on stderr; --write_on_failure writes the better of
+// the input and the result and still exits 1.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "tests/optimize/grid_meshes.h"
+#include "tmop/io/mesh_io.h"
+
+namespace tmop {
+namespace {
+
+class TmopOptimizeTool : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (std::system(("test -x " + tool_).c_str()) != 0) GTEST_SKIP() << "tmop_optimize not built";
+    char dir[] = "/tmp/tmop_optimize_tool_XXXXXX";
+    ASSERT_NE(mkdtemp(dir), nullptr);
+    dir_ = dir;
+    Mesh m = testing_grid::grid(CellType::kTri3, 4);
+    ASSERT_TRUE(write_mesh(dir_ + "/grid.msh", m).ok());
+  }
+  void TearDown() override {
+    if (!dir_.empty()) std::system(("rm -rf " + dir_).c_str());
+  }
+  // Runs the tool with `args`; returns its exit code, stderr in *err.
+  int run(const std::string& args, std::string* err) {
+    const std::string cmd = tool_ + " " + args + " > " + dir_ + "/out.txt 2> " + dir_ + "/err.txt";
+    const int status = std::system(cmd.c_str());
+    std::ifstream f(dir_ + "/err.txt");
+    std::stringstream ss;
+    ss << f.rdbuf();
+    *err = ss.str();
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  int lines(const std::string& s) {
+    int n = 0;
+    for (char c : s) n += c == '\n';
+    return n;
+  }
+  std::string tool_ = TMOP_BINARY_DIR "/tools/tmop_optimize";
+  std::string dir_;
+};
+
+TEST_F(TmopOptimizeTool, UsageErrorsExitWithTwoAndOneLine) {
+  const std::string io = "--input=" + dir_ + "/grid.msh --output=" + dir_ + "/o.vtu ";
+  for (const std::string& bad :
+       {std::string("--bogus=1"), std::string("--metric=nope"), std::string("--max_iterations=-3"),
+        std::string("--recipe=nope"), std::string("--feature_angle=0"), std::string("--power=0.5"),
+        std::string("--boundary=sticky")}) {
+    std::string err;
+    EXPECT_EQ(run(io + bad, &err), 2) << bad << ": " << err;
+    EXPECT_EQ(lines(err), 1) << bad << ": " << err;
+  }
+  std::string err;
+  EXPECT_EQ(run(io, &err), 0) << err;
+}
+
+// An inverted triangle whose vertices are all on the (fixed) boundary cannot be repaired.
+TEST_F(TmopOptimizeTool, HonestFailureWritesTheInputOnlyWhenAsked) {
+  Mesh m = testing_grid::grid(CellType::kTri3, 1);  // two triangles, every vertex on the boundary
+  std::swap(m.cell(0)[1], m.cell(0)[2]);
+  const std::string in = dir_ + "/folded.msh", out = dir_ + "/o.msh";
+  ASSERT_TRUE(write_mesh(in, m).ok());
+  std::string err;
+  EXPECT_EQ(run("--input=" + in + " --output=" + out, &err), 1);
+  EXPECT_EQ(lines(err), 1) << err;
+  EXPECT_NE(err.find("every node fixed"), std::string::npos) << err;
+  EXPECT_NE(std::system(("test -e " + out).c_str()), 0);  // nothing written
+  EXPECT_EQ(run("--input=" + in + " --output=" + out + " --write_on_failure", &err), 1);
+  EXPECT_NE(err.find("input written unchanged"), std::string::npos) << err;
+  Mesh written;
+  ASSERT_TRUE(read_mesh(out, &written).ok());
+  EXPECT_EQ(written.coords, m.coords);
+}
+
+}  // namespace
+}  // namespace tmop
