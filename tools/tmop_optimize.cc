@@ -57,8 +57,10 @@ DEFINE_string(reference, "",
               "(implies --target=reference).");
 DEFINE_string(size_field, "", "Point-data array of target edge lengths (--target=size_field).");
 DEFINE_string(sample_points, "default", "Sample rule: default, corners, nodes, centroid, gauss.");
-DEFINE_double(power, 1.0,
-              "Power order of the objective: 1 = plain mean; > 1 weights the worst elements up.");
+DEFINE_double(power, 0,
+              "Power order p of the objective: 1 = plain mean; > 1 weights the worst elements "
+              "up (iteratively reweighted); 0 = the recipe's default (shape, auto: 2 for volume "
+              "and planar meshes, 1 for surface meshes; size_adapt: 1).");
 DEFINE_string(solver, "lm", "Trust-region method: lm (Levenberg-Marquardt) or dogleg.");
 DEFINE_string(linear_solver, "auto", "auto, cholesky (sparse normal Cholesky) or cgnr.");
 DEFINE_int32(max_iterations, 200, "Maximum solver iterations per stage.");
@@ -173,7 +175,7 @@ int main(int argc, char** argv) {
   if (!(FLAGS_max_seconds > 0)) return fail(2, "--max_seconds must be > 0");
   if (!(FLAGS_function_tolerance >= 0)) return fail(2, "--function_tolerance must be >= 0");
   if (FLAGS_threads < 0) return fail(2, "--threads must be >= 0 (0: all cores)");
-  if (!(FLAGS_power >= 1)) return fail(2, "--power must be >= 1");
+  if (!(FLAGS_power >= 1 || FLAGS_power == 0)) return fail(2, "--power must be >= 1 (or 0)");
   if (!(FLAGS_feature_angle > 0 && FLAGS_feature_angle < 180))
     return fail(2, "--feature_angle must be in (0, 180) degrees");
   if (FLAGS_boundary != "fixed" && FLAGS_boundary != "slide")
@@ -188,7 +190,7 @@ int main(int argc, char** argv) {
 
   ShapeOptions opt;
   opt.metric = FLAGS_metric;
-  opt.power = FLAGS_power;
+  if (FLAGS_power > 0) opt.power = FLAGS_power;
   if (!sample_rule_from_name(FLAGS_sample_points, &opt.rule))
     return fail(2, "unknown --sample_points '" + FLAGS_sample_points + "'");
   std::string target = FLAGS_reference.empty() ? FLAGS_target : "reference";
@@ -280,7 +282,7 @@ int main(int argc, char** argv) {
     SizeAdaptOptions a;
     a.size_field = FLAGS_size_field;
     if (!FLAGS_metric.empty()) a.metric = FLAGS_metric;
-    a.power = FLAGS_power;
+    if (FLAGS_power > 0) a.power = FLAGS_power;
     a.rule = opt.rule;
     a.solver = opt.solver;
     a.slide = slide;

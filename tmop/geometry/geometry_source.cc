@@ -41,9 +41,17 @@ double norm3(const double* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2
 Status load_geometry_source(const std::string& spec, GeometrySource* out,
                             const GeometryFrame& frame) {
   if (!(frame.length > 0)) return Status::Failure("geometry: frame length must be positive");
-  // Points and lengths map to the frame; directions do not change.
+  // Points and lengths map to the frame; directions rotate.
+  auto direction = [&](double* p) {
+    double y[3];
+    for (int i = 0; i < 3; ++i)
+      y[i] = frame.rotation[3 * i] * p[0] + frame.rotation[3 * i + 1] * p[1] +
+             frame.rotation[3 * i + 2] * p[2];
+    for (int i = 0; i < 3; ++i) p[i] = y[i];
+  };
   auto point = [&](double* p) {
     for (int i = 0; i < 3; ++i) p[i] = (p[i] - frame.centre[i]) / frame.length;
+    direction(p);
   };
   *out = GeometrySource();
   if (spec.empty()) {
@@ -67,10 +75,12 @@ Status load_geometry_source(const std::string& spec, GeometrySource* out,
       out->surface = std::make_unique<SphereManifold>(x.data(), x[3] / frame.length);
     } else if (name == "plane") {
       if (norm3(&x[3]) == 0) return Status::Failure("geometry '" + spec + "': zero normal");
+      direction(&x[3]);
       out->surface = std::make_unique<PlaneManifold>(x.data(), &x[3]);
     } else {
       if (norm3(&x[3]) == 0) return Status::Failure("geometry '" + spec + "': zero axis");
       if (!(x[6] > 0)) return Status::Failure("geometry '" + spec + "': radius must be > 0");
+      direction(&x[3]);
       out->surface = std::make_unique<CylinderManifold>(x.data(), &x[3], x[6] / frame.length);
     }
     return Status::Ok();

@@ -29,11 +29,13 @@ struct GeometrySource {
   std::string description;                    // for reports: "own boundary", "sphere", PATH
 };
 
-// The geometry in the coordinates x' = (x - centre) / length (centre[3], length > 0) of a mesh
-// that the optimizer normalised; the spec's numbers and the file are in the user's units.
+// The geometry in the coordinates x' = R (x - centre) / length (centre[3], length > 0, R a
+// rotation, row-major) of a mesh that the optimizer normalised; the spec's numbers and the file
+// are in the user's units.
 struct GeometryFrame {
   double centre[3] = {0, 0, 0};
   double length = 1;
+  double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
 };
 
 Status load_geometry_source(const std::string& spec, GeometrySource* out,

@@ -2,6 +2,7 @@
 
 #include <ceres/ceres.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -229,18 +230,32 @@ std::vector<int> inverted_cells(const Mesh& mesh, const IdealTable& table, const
   return out;
 }
 
-// Translation and scale that make the problem dimensionless: x' = (x - centre) / length.
+// The frame that makes the problem dimensionless: x' = R (x - centre) / length.
 struct Normalization {
-  double centre[3] = {0, 0, 0};
-  double length = 1;
+  CoordinateFrame f;
   void apply(Mesh* m) const {
-    for (int v = 0; v < m->num_vertices(); ++v)
-      for (int a = 0; a < m->space_dim; ++a)
-        m->vertex(v)[a] = (m->vertex(v)[a] - centre[a]) / length;
+    const int sd = m->space_dim;
+    for (int v = 0; v < m->num_vertices(); ++v) {
+      double* x = m->vertex(v);
+      double y[3];
+      for (int a = 0; a < sd; ++a) {
+        y[a] = 0;
+        for (int b = 0; b < sd; ++b) y[a] += f.rotation[3 * a + b] * (x[b] - f.centre[b]);
+      }
+      for (int a = 0; a < sd; ++a) x[a] = y[a] / f.length;
+    }
   }
   void undo(Mesh* m) const {
-    for (int v = 0; v < m->num_vertices(); ++v)
-      for (int a = 0; a < m->space_dim; ++a) m->vertex(v)[a] = centre[a] + length * m->vertex(v)[a];
+    const int sd = m->space_dim;
+    for (int v = 0; v < m->num_vertices(); ++v) {
+      double* x = m->vertex(v);
+      double y[3];
+      for (int a = 0; a < sd; ++a) {
+        y[a] = 0;
+        for (int b = 0; b < sd; ++b) y[a] += f.rotation[3 * b + a] * x[b];
+      }
+      for (int a = 0; a < sd; ++a) x[a] = f.centre[a] + f.length * y[a];
+    }
   }
 };
 
@@ -494,27 +509,45 @@ bool linear_solver_from_name(const std::string& name, SolverOptions::LinearSolve
 
 CoordinateFrame normalizing_frame(const Mesh& mesh) {
   CoordinateFrame f;
-  const int nv = mesh.num_vertices();
+  const int nv = mesh.num_vertices(), sd = mesh.space_dim;
   for (int v = 0; v < nv; ++v)
-    for (int a = 0; a < mesh.space_dim; ++a) f.centre[a] += mesh.vertex(v)[a] / nv;
+    for (int a = 0; a < sd; ++a) f.centre[a] += mesh.vertex(v)[a] / nv;
   std::vector<double> shortest;
   f.length = cell_edge_lengths(mesh, &shortest);
+  if (mesh.dim() != sd || nv < sd + 1 || !(f.length > 0)) return f;
+  // Principal axes of the vertices (in units of the mean edge length, for conditioning).
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  for (int v = 0; v < nv; ++v) {
+    Eigen::Vector3d y = Eigen::Vector3d::Zero();
+    for (int a = 0; a < sd; ++a) y[a] = (mesh.vertex(v)[a] - f.centre[a]) / f.length;
+    C += y * y.transpose();
+  }
+  const Eigen::MatrixXd Cs = C.topLeftCorner(sd, sd);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(Cs);
+  if (eig.info() != Eigen::Success) return f;
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  // Axes by decreasing moment; each signed so that the third moment along it is positive.
+  for (int k = 0; k < sd; ++k) {
+    Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+    axis.head(sd) = eig.eigenvectors().col(sd - 1 - k);
+    double m3 = 0;
+    for (int v = 0; v < nv; ++v) {
+      double t = 0;
+      for (int a = 0; a < sd; ++a) t += axis[a] * (mesh.vertex(v)[a] - f.centre[a]) / f.length;
+      m3 += t * t * t;
+    }
+    if (m3 < 0) axis = -axis;
+    R.row(k) = axis.transpose();
+  }
+  if (R.topLeftCorner(sd, sd).determinant() < 0) R.row(sd - 1) *= -1;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) f.rotation[3 * a + b] = R(a, b);
   return f;
 }
 
-void to_frame(const CoordinateFrame& frame, Mesh* mesh) {
-  Normalization n;
-  for (int a = 0; a < 3; ++a) n.centre[a] = frame.centre[a];
-  n.length = frame.length;
-  n.apply(mesh);
-}
+void to_frame(const CoordinateFrame& frame, Mesh* mesh) { Normalization{frame}.apply(mesh); }
 
-void from_frame(const CoordinateFrame& frame, Mesh* mesh) {
-  Normalization n;
-  for (int a = 0; a < 3; ++a) n.centre[a] = frame.centre[a];
-  n.length = frame.length;
-  n.undo(mesh);
-}
+void from_frame(const CoordinateFrame& frame, Mesh* mesh) { Normalization{frame}.undo(mesh); }
 
 IterationRecord measure_mesh(const Mesh& mesh, SampleRule rule) {
   const int d = mesh.dim();
@@ -583,13 +616,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
 
   // Solve in normalised coordinates; keep the original to restore on failure.
   const std::vector<double> original = mesh->coords;
-  Normalization norm;
-  {
-    const CoordinateFrame f = spec.boundary ? spec.frame : normalizing_frame(*mesh);
-    for (int a = 0; a < 3; ++a) norm.centre[a] = f.centre[a];
-    norm.length = f.length;
-    if (!(norm.length > 0)) return Status::Failure("the mesh has no edge of positive length");
-  }
+  const Normalization norm{spec.boundary ? spec.frame : normalizing_frame(*mesh)};
+  if (!(norm.f.length > 0)) return Status::Failure("the mesh has no edge of positive length");
   norm.apply(mesh);
   // Surface meshes: per-cell tangent frames from the geometry's normals at the cell's corners.
   Frames frames;
@@ -646,7 +674,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       field_copy = *mesh;
       for (DataArray& a : field_copy.point_data)
         if (a.name == target.size_field)
-          for (double& v : a.values) v /= norm.length;
+          for (double& v : a.values) v /= norm.f.length;
       source = &field_copy;
     }
     std::vector<double> W;

@@ -25,14 +25,21 @@ namespace tmop {
 
 class BoundaryConstraints;  // geometry/boundary_constraints.h
 
-// The translation and scale a stage solves in: x' = (x - centre) / length.
+// The frame a stage solves in: x' = R (x - centre) / length, R a rotation (row-major 3 x 3; the
+// leading 2 x 2 block for space_dim 2).
 struct CoordinateFrame {
   double centre[3] = {0, 0, 0};
   double length = 1;
+  double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
 };
-// Centroid of the vertices and mean element edge length: what a stage uses by default.
+// What a stage uses by default: the centroid of the vertices, the mean element edge length, and
+// for volume and planar meshes (dim == space_dim) the principal axes of the vertex cloud (each
+// axis signed by the third moment of the vertices along it, det R = +1). The frame follows the
+// mesh when it is translated, scaled or rotated, so the stage sees the same numbers and the
+// result follows the transform to round-off (meshes with repeated principal moments, such as
+// symmetric grids, leave the axes free: there only translation and scale are exact).
 CoordinateFrame normalizing_frame(const Mesh& mesh);
-// x' = (x - centre) / length for every vertex, and back.
+// x' = R (x - centre) / length for every vertex, and back.
 void to_frame(const CoordinateFrame& frame, Mesh* mesh);
 void from_frame(const CoordinateFrame& frame, Mesh* mesh);
 

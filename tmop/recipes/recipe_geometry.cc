@@ -11,6 +11,7 @@ Status build_recipe_geometry(const Mesh& mesh, const BoundaryOptions& options,
   BoundaryOptions opt = options;
   for (int a = 0; a < 3; ++a) opt.geometry_frame.centre[a] = out->frame.centre[a];
   opt.geometry_frame.length = out->frame.length;
+  for (int k = 0; k < 9; ++k) opt.geometry_frame.rotation[k] = out->frame.rotation[k];
   return BoundaryConstraints::Build(mapped, opt, &out->constraints);
 }
 
