@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <numeric>
 #include <utility>
@@ -69,6 +70,16 @@ class FacetTags {
 std::int32_t region_of(const Mesh& mesh, int cell) {
   return cell < static_cast<int>(mesh.cell_region.size()) ? mesh.cell_region[cell] : 0;
 }
+
+// The (region, entity) pair of a cell as one key (topology.h's same_region).
+std::int64_t region_key(const Mesh& mesh, int cell) {
+  const std::int64_t e =
+      cell < static_cast<int>(mesh.cell_entity.size()) ? mesh.cell_entity[cell] : 0;
+  return (std::int64_t(region_of(mesh, cell)) << 32) ^ (e & 0xffffffff);
+}
+
+// Region values of interface facets: below any file tag, one per pair of regions.
+constexpr std::int32_t kInterfaceRegionBase = std::numeric_limits<std::int32_t>::min() / 2;
 
 // Extra nodes of quadratic facet `local` of a cell: mid-edge nodes of its edges (in the facet's
 // corner order) and, for hex27, the node in the middle of the face.
@@ -259,6 +270,29 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
       f.region = region_of(mesh, bf.cell);
       faces.push_back(f);
     }
+    // Region interfaces are boundaries of their regions: their facets (from the first cell's
+    // side) form patches of their own, one region value per pair of regions, and the edges
+    // where they meet the outer boundary (three facets) become feature curves.
+    if (options.region_interfaces) {
+      std::map<std::pair<std::int64_t, std::int64_t>, std::int32_t> pair_region;
+      for (const InteriorFacet& inf : region_interface_facets(mesh)) {
+        const int c = inf.cell[0];
+        const CellFacet& facet = cell_info(mesh.cell_type(c)).facets[inf.local[0]];
+        Face f;
+        f.num_corners = facet.num_corners;
+        for (int k = 0; k < 4; ++k)
+          f.corners[k] = k < facet.num_corners ? mesh.cell(c)[facet.corners[k]] : -1;
+        facet_extra_nodes(mesh.cell_type(c), inf.local[0], mesh.cell(c), f.mid, &f.centre);
+        const std::int64_t a = region_key(mesh, inf.cell[0]), b = region_key(mesh, inf.cell[1]);
+        const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+        auto it = pair_region.find(key);
+        if (it == pair_region.end())
+          it = pair_region.emplace(key, kInterfaceRegionBase - std::int32_t(pair_region.size()))
+                   .first;
+        f.region = it->second;
+        faces.push_back(f);
+      }
+    }
   } else if (space == 3) {
     for (int c = 0; c < mesh.num_cells(); ++c) {
       if (!mesh.is_element(c, dim)) continue;
@@ -280,6 +314,16 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
       facet_extra_nodes(mesh.cell_type(bf.cell), bf.local, mesh.cell(bf.cell), mid, &centre);
       const std::int32_t tag = tags ? tags->find(bf.corners, 2) : 0;
       features.push_back({bf.corners[0], bf.corners[1], mid[0], region_of(mesh, bf.cell), tag});
+    }
+    if (options.region_interfaces) {
+      for (const InteriorFacet& inf : region_interface_facets(mesh)) {
+        const int c = inf.cell[0];
+        const CellFacet& facet = cell_info(mesh.cell_type(c)).facets[inf.local[0]];
+        std::int32_t mid[4], centre;
+        facet_extra_nodes(mesh.cell_type(c), inf.local[0], mesh.cell(c), mid, &centre);
+        features.push_back({mesh.cell(c)[facet.corners[0]], mesh.cell(c)[facet.corners[1]], mid[0],
+                            kInterfaceRegionBase, 0});
+      }
     }
   }
   for (Face& f : faces) face_normal(mesh, &f);

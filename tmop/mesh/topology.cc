@@ -202,15 +202,39 @@ std::vector<InteriorFacet> interior_facets(const Mesh& mesh) {
   return out;
 }
 
+bool same_region(const Mesh& mesh, int a, int b) {
+  auto tag = [](const std::vector<std::int32_t>& v, int c) {
+    return c < static_cast<int>(v.size()) ? v[c] : 0;
+  };
+  return tag(mesh.cell_region, a) == tag(mesh.cell_region, b) &&
+         tag(mesh.cell_entity, a) == tag(mesh.cell_entity, b);
+}
+
+std::vector<InteriorFacet> region_interface_facets(const Mesh& mesh) {
+  std::vector<InteriorFacet> out;
+  for (const InteriorFacet& f : interior_facets(mesh))
+    if (!same_region(mesh, f.cell[0], f.cell[1])) out.push_back(f);
+  return out;
+}
+
 std::vector<char> boundary_vertex_mask(const Mesh& mesh) {
   static const FacetNodes facet_nodes;
   std::vector<char> mask(mesh.num_vertices(), 0);
-  for (const BoundaryFacet& f : boundary_facets(mesh)) {
-    for (int k = 0; k < f.num_corners; ++k) mask[f.corners[k]] = 1;
-    const int t = static_cast<int>(mesh.cell_type(f.cell));
-    const std::int32_t* nodes = mesh.cell(f.cell);
-    for (int k = 0; k < facet_nodes.count[t][f.local]; ++k)
-      mask[nodes[facet_nodes.nodes[t][f.local][k]]] = 1;
+  // Every node of facet `local` of `cell`: its corners, then its mid-edge / face nodes.
+  auto mark = [&](int cell, int local) {
+    const int t = static_cast<int>(mesh.cell_type(cell));
+    const std::int32_t* nodes = mesh.cell(cell);
+    const CellFacet& facet = cell_info(mesh.cell_type(cell)).facets[local];
+    for (int k = 0; k < facet.num_corners; ++k) mask[nodes[facet.corners[k]]] = 1;
+    for (int k = 0; k < facet_nodes.count[t][local]; ++k)
+      mask[nodes[facet_nodes.nodes[t][local][k]]] = 1;
+  };
+  // One facet matching for both: facets of one element, and region interfaces.
+  const FacetMatching m = match_facets(mesh);
+  for (std::size_t inst = 0; inst < m.cell.size(); ++inst) {
+    if (m.multiplicity[inst] == 1 ||
+        (m.multiplicity[inst] == 2 && !same_region(mesh, m.cell[inst], m.cell[m.partner[inst]])))
+      mark(m.cell[inst], m.local[inst]);
   }
   return mask;
 }

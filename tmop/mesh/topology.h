@@ -45,8 +45,17 @@ struct InteriorFacet {
 // list.
 std::vector<InteriorFacet> interior_facets(const Mesh& mesh);
 
-// num_vertices() entries: 1 for every node on a boundary facet, including the mid-edge nodes and
-// (hex27) face nodes of quadratic cells that lie on that facet; 0 otherwise.
+// Whether two cells belong to the same region: equal cell_region (physical) and cell_entity
+// (geometric entity) tags, 0 when a tag array is missing.
+bool same_region(const Mesh& mesh, int a, int b);
+
+// The interior facets between elements of different regions (material interfaces, CAD volumes
+// meeting), in interior_facets order.
+std::vector<InteriorFacet> region_interface_facets(const Mesh& mesh);
+
+// num_vertices() entries: 1 for every node on a boundary facet or a region interface facet
+// (both are boundaries of a region, and a fixed boundary keeps them), including the mid-edge
+// nodes and (hex27) face nodes of quadratic cells that lie on that facet; 0 otherwise.
 std::vector<char> boundary_vertex_mask(const Mesh& mesh);
 
 // Compressed rows: the cells of vertex v are items[offsets[v] .. offsets[v + 1]), ascending.
