@@ -59,8 +59,8 @@ DEFINE_string(size_field, "", "Point-data array of target edge lengths (--target
 DEFINE_string(sample_points, "default", "Sample rule: default, corners, nodes, centroid, gauss.");
 DEFINE_double(power, 0,
               "Power order p of the objective: 1 = plain mean; > 1 weights the worst elements "
-              "up (iteratively reweighted); 0 = the recipe's default (shape, auto: 2 for volume "
-              "and planar meshes, 1 for surface meshes; size_adapt: 1).");
+              "up (iteratively reweighted); 0 = the recipe's default (shape, auto, surface: 2; "
+              "size_adapt: 1).");
 DEFINE_string(solver, "lm", "Trust-region method: lm (Levenberg-Marquardt) or dogleg.");
 DEFINE_string(linear_solver, "auto", "auto, cholesky (sparse normal Cholesky) or cgnr.");
 DEFINE_int32(max_iterations, 200, "Maximum solver iterations per stage.");

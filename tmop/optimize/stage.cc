@@ -855,18 +855,44 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     return summary.termination_type != ceres::FAILURE;
   };
   int untangle_rounds = 0;
-  const int frame_rounds = surface ? std::max(1, spec.surface_frame_rounds) : 1;
+  // Surface meshes solve in rounds: the tangent frames are held fixed during a solve and
+  // refreshed at the new positions after it. A barrier round is kept only if no cell is folded
+  // in the refreshed frames, i.e. against the surface where the cell now lies: a long solve can
+  // carry cells across curved parts of the surface in frames that went stale (lat-long sphere
+  // sliding on its own triangulation: 36 triangles folded inward). A round that folds is undone
+  // and redone with half the iterations; rounds end when a solve converges within its cap.
+  const bool surface_rounds = surface && !spec.untangle;
+  const int frame_rounds =
+      surface ? std::max(1, surface_rounds ? spec.surface_max_rounds : spec.surface_frame_rounds)
+              : 1;
+  int round_cap = surface_rounds ? std::max(1, spec.surface_round_iterations) : 0;
+  int surface_iterations = 0;
+  // The iteration budget of all rounds: max_iterations per reweighting round.
+  const int surface_budget =
+      spec.solver.max_iterations * (spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1);
+  std::vector<double> round_start;
   for (int frame_round = 0; frame_round < frame_rounds; ++frame_round) {
     if (frame_round > 0) {
-      // New frames at the new positions. A barrier stage must still start valid: if a cell
-      // whose frame turned has det T <= 0 in it, keep the previous frames and stop here.
       const std::vector<double> previous_frames = frames.F;
       update_frames();
       if (barrier && !(min_target_det(*mesh, point_cell, G[0], g_offset, nullptr, frames) > 0)) {
         frames.F = previous_frames;
-        break;
+        if (!surface_rounds || round_cap <= 1) {
+          if (surface_rounds) mesh->coords = round_start;
+          break;
+        }
+        mesh->coords = round_start;  // where previous_frames were made: the same frames again
+        round_cap /= 2;
+      } else if (surface_rounds &&
+                 ((summary.termination_type != ceres::NO_CONVERGENCE &&
+                   (spec.power <= 1 ||
+                    (frame_round > spec.power_rounds &&
+                     summary.initial_cost - summary.final_cost < 1e-3 * summary.initial_cost))) ||
+                  surface_iterations >= surface_budget)) {
+        break;  // converged (or out of iterations) in frames that are still valid
       }
     }
+    if (surface_rounds) round_start = mesh->coords;
     if (spec.untangle) {
       // eps schedule: after each solve, sigma = max(1 - E_final / E_initial, 0.1) (the relative
       // decrease the solve achieved),
@@ -895,10 +921,13 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                        mu, eps);
       }
     } else {
-      const int rounds = spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1;
+      // Surface rounds carry the reweighting themselves: one solve per frame round, the weights
+      // refreshed with the frames (so both follow the cells), power_rounds of them at least.
+      const int rounds =
+          surface_rounds ? 1 : (spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1);
       std::vector<const double*> xs(kMaxCellNodes);
       for (int round = 0; round < rounds; ++round) {
-        if (round > 0) {
+        if (round > 0 || (surface_rounds && spec.power > 1 && frame_round > 0)) {
           // Reweight: multiplier (v_k / mean v)^(p-1) from the current per-point values.
           std::vector<double> v(costs.size());
           double mean = 0;
@@ -914,12 +943,15 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
             costs[k].set_weight_multiplier(std::pow(1 + v[k] / mean, spec.power - 1));
         }
         // Rounds before the last only steer the weights: a loose solve is enough.
-        const bool last = round + 1 == rounds;
+        const bool last = round + 1 == rounds &&
+                          (!surface_rounds || spec.power <= 1 || frame_round >= spec.power_rounds);
         so.max_num_iterations =
             last ? spec.solver.max_iterations : std::min(spec.solver.max_iterations, 20);
+        if (surface_rounds) so.max_num_iterations = std::min(so.max_num_iterations, round_cap);
         so.function_tolerance =
             last ? spec.solver.function_tolerance : std::max(spec.solver.function_tolerance, 1e-4);
         if (!solve()) return fail("solver failed: " + summary.message);
+        if (surface_rounds) surface_iterations += static_cast<int>(summary.iterations.size()) - 1;
       }
     }
   }

@@ -70,7 +70,12 @@ struct StageSpec {
   CoordinateFrame frame;
   // Surface meshes: the tangent frames are held fixed during a Ceres solve (exact derivatives
   // for that frame) and refreshed at the new positions between solves, this many solves.
-  int surface_frame_rounds = 3;
+  int surface_frame_rounds = 3;  // untangling stages
+  // Barrier and other stages on surface meshes: solves of at most surface_round_iterations
+  // Ceres iterations each, refreshing the frames between them, at most surface_max_rounds
+  // (stage.cc explains the undo of a round that folds a cell).
+  int surface_round_iterations = 20;
+  int surface_max_rounds = 40;
   SolverOptions solver;
   // Power order p >= 1: weight the worst points up. Iteratively reweighted least squares: each
   // round solves the plain least-squares problem with fixed weights (1 + v_k / mean v)^(p-1),

@@ -67,7 +67,7 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
     if (geometry) geometry->apply(&stage);
     TermSpec term;
     term.metric = recipe_metric(options.metric, d, 1.0, &error);
-    stage.power = options.power > 0 ? options.power : (is_surface_mesh(*mesh) ? 1.0 : 2.0);
+    stage.power = options.power > 0 ? options.power : 2.0;
     if (!term.metric) return Status::Failure(error);
     term.target = options.target;
     stage.terms.push_back(term);
