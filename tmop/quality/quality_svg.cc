@@ -218,13 +218,41 @@ std::string panels(const std::vector<const QualityReport*>& reports,
   return c.finish();
 }
 
-// A planar 2D mesh filled by per-cell quality, with a colour bar.
+// A 2D mesh filled by per-cell quality, with a colour bar: planar meshes in their plane, surface
+// meshes in an orthographic view from direction (1, -1.3, 0.9) with cells painted back to front
+// (a closed surface hides its far side).
 std::string planar_map(const Mesh& mesh, const QualityReport& r) {
+  const bool surface = mesh.space_dim == 3 && !r.planar;
+  double right[3] = {1, 0, 0}, up[3] = {0, 1, 0}, toward[3] = {0, 0, 1};
+  if (surface) {
+    const double d[3] = {1, -1.3, 0.9};
+    const double dn = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (int k = 0; k < 3; ++k) toward[k] = d[k] / dn;
+    // right = z x toward, normalised; up = toward x right.
+    right[0] = -toward[1];
+    right[1] = toward[0];
+    right[2] = 0;
+    const double rn = std::sqrt(right[0] * right[0] + right[1] * right[1]);
+    right[0] /= rn;
+    right[1] /= rn;
+    up[0] = toward[1] * right[2] - toward[2] * right[1];
+    up[1] = toward[2] * right[0] - toward[0] * right[2];
+    up[2] = toward[0] * right[1] - toward[1] * right[0];
+  }
+  auto project = [&](const double* x, double* p) {
+    const double z = mesh.space_dim == 3 ? x[2] : 0;
+    p[0] = right[0] * x[0] + right[1] * x[1] + right[2] * z;
+    p[1] = up[0] * x[0] + up[1] * x[1] + up[2] * z;
+    return toward[0] * x[0] + toward[1] * x[1] + toward[2] * z;  // depth, larger = nearer
+  };
+  std::vector<double> proj(2 * mesh.num_vertices()), depth(mesh.num_vertices());
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    depth[v] = project(mesh.vertex(v), proj.data() + 2 * v);
   double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
   for (int v = 0; v < mesh.num_vertices(); ++v)
     for (int k = 0; k < 2; ++k) {
-      lo[k] = std::min(lo[k], mesh.vertex(v)[k]);
-      hi[k] = std::max(hi[k], mesh.vertex(v)[k]);
+      lo[k] = std::min(lo[k], proj[2 * v + k]);
+      hi[k] = std::max(hi[k], proj[2 * v + k]);
     }
   const double size = 640, margin = 40;
   const double span = std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-300});
@@ -237,7 +265,18 @@ std::string planar_map(const Mesh& mesh, const QualityReport& r) {
   const std::string stroke = thin ? "none" : "#333333";
   const double stroke_width = std::min(0.5, 200.0 / std::sqrt(std::max<double>(1, r.num_elements)));
   double worst = std::numeric_limits<double>::infinity();  // as worst_quality.h
-  for (int cell = 0; cell < mesh.num_cells(); ++cell) {
+  std::vector<int> order;
+  for (int cell = 0; cell < mesh.num_cells(); ++cell)
+    if (cell_info(mesh.cell_types[cell]).dim == 2) order.push_back(cell);
+  if (surface) {
+    std::vector<double> key(mesh.num_cells(), 0);
+    for (int cell : order) {
+      const int k = cell_info(mesh.cell_types[cell]).num_corners;
+      for (int i = 0; i < k; ++i) key[cell] += depth[mesh.cell(cell)[i]] / k;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
+  }
+  for (int cell : order) {
     const CellType type = mesh.cell_types[cell];
     const CellInfo& info = cell_info(type);
     if (info.dim != 2) continue;
@@ -246,7 +285,7 @@ std::string planar_map(const Mesh& mesh, const QualityReport& r) {
     int n = 0;
     const std::int32_t* nodes = mesh.cell(cell);
     auto add = [&](int local) {
-      const double* x = mesh.vertex(nodes[local]);
+      const double* x = proj.data() + 2 * nodes[local];
       xy[2 * n] = margin + shift_x + (x[0] - lo[0]) * scale;
       xy[2 * n + 1] = margin + size - shift_y - (x[1] - lo[1]) * scale;
       ++n;
@@ -281,7 +320,7 @@ std::string planar_map(const Mesh& mesh, const QualityReport& r) {
 }  // namespace
 
 std::string quality_svg(const Mesh& mesh, const QualityReport& report) {
-  if (report.dim == 2 && report.planar) return planar_map(mesh, report);
+  if (report.dim == 2 && (report.planar || mesh.space_dim == 3)) return planar_map(mesh, report);
   return panels({&report}, {""});
 }
 

@@ -6,7 +6,9 @@
 //     uses (mean ratio for simplices, scaled Jacobian otherwise), on a colour bar from 0 (dark
 //     blue) to 1 (yellow); inverted elements magenta whatever their value. Quadratic cells are
 //     drawn as the polygon through their corner and mid-edge nodes.
-//   - other meshes (3D, surfaces in 3D): panels with histograms (fraction of elements per fixed
+//   - surface meshes (2D cells in 3D): the same map in an orthographic view from direction
+//     (1, -1.3, 0.9), cells painted back to front.
+//   - volume meshes: panels with histograms (fraction of elements per fixed
 //     bin of quality_report.h: mean ratio, scaled Jacobian, min and max (dihedral) angles) and a
 //     scatter plot of max vs min dihedral angle per tet (2D elements: interior angles), with the
 //     sliver corner (min < 10, max > 150 degrees) shaded. At most 20000 points are drawn per
