@@ -62,7 +62,7 @@ TEST(BarrierShape, NeverInvertsAndNeverIncreasesTheObjective) {
   int runs = 0;
   for (int trial = 0; trial < 250; ++trial) {
     for (CellType type : types) {
-      const int n = cell_dim(type) == 2 ? 4 : 2;
+      const int n = cell_dim(type) == 2 ? 5 : 3;  // 16 and 8 free vertices
       Mesh mesh = grid(type, n);
       perturb(&mesh, n, 0.45, &rng);
       ShapeOptions opt;

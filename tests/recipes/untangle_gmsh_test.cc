@@ -69,6 +69,17 @@ const char* kHexBox =
     "Box(1) = {0, 0, 0, 1, 1, 1};\nTransfinite Curve{:} = 13;\nTransfinite Surface{:};\n"
     "Recombine Surface{:};\nTransfinite Volume{1};\nRecombine Volume{1};\n";
 
+// Prisms: triangles extruded in layers. Mixed: quads and triangles extruded into hexes and
+// prisms, two volumes (their interface is a region interface, kept fixed).
+const char* kPrisms =
+    "Rectangle(1) = {0, 0, 0, 1, 1};\nMesh.CharacteristicLengthMax = 0.09;\n"
+    "Extrude {0, 0, 0.6} { Surface{1}; Layers{7}; Recombine; }\n";
+const char* kMixed =
+    "Rectangle(1) = {0, 0, 0, 0.5, 1};\nRectangle(2) = {0.5, 0, 0, 0.5, 1};\n"
+    "BooleanFragments{ Surface{1}; Delete; }{ Surface{2}; Delete; }\n"
+    "Mesh.CharacteristicLengthMax = 0.09;\nRecombine Surface{1};\n"
+    "Extrude {0, 0, 0.6} { Surface{1, 2}; Layers{7}; Recombine; }\n";
+
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 class UntangleGmsh : public ::testing::TestWithParam<Case> {};
@@ -99,7 +110,11 @@ INSTANTIATE_TEST_SUITE_P(Meshes, UntangleGmsh,
                                            Case{"tet_few", 3, kBox, 0.75, 0.05},
                                            Case{"tet_many", 3, kBox, 1.5, 0.30},
                                            Case{"hex_few", 3, kHexBox, 0.42, 0.05},
-                                           Case{"hex_many", 3, kHexBox, 0.55, 0.30}),
+                                           Case{"hex_many", 3, kHexBox, 0.55, 0.30},
+                                           Case{"prism_few", 3, kPrisms, 0.6, 0.05},
+                                           Case{"prism_many", 3, kPrisms, 0.9, 0.30},
+                                           Case{"mixed_few", 3, kMixed, 0.45, 0.05},
+                                           Case{"mixed_many", 3, kMixed, 0.9, 0.30}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
