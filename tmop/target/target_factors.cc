@@ -50,12 +50,15 @@ bool factor_jacobian(CellType type, const double* A, TargetFactors* f) {
       l2 += v[i] * v[i];
     }
     length[j] = std::sqrt(l2);
-    for (int k = 0; k < j; ++k) {
-      double r = 0;
-      for (int i = 0; i < d; ++i) r += e[k][i] * v[i];
-      U[k][j] = r;
-      for (int i = 0; i < d; ++i) v[i] -= r * e[k][i];
-    }
+    // Two passes ("twice is enough"): R stays orthonormal to rounding even for a nearly
+    // singular A, which one pass does not give.
+    for (int pass = 0; pass < 2; ++pass)
+      for (int k = 0; k < j; ++k) {
+        double r = 0;
+        for (int i = 0; i < d; ++i) r += e[k][i] * v[i];
+        U[k][j] += r;
+        for (int i = 0; i < d; ++i) v[i] -= r * e[k][i];
+      }
     double n = 0;
     for (int i = 0; i < d; ++i) n += v[i] * v[i];
     n = std::sqrt(n);
@@ -147,7 +150,8 @@ bool skew_from_angles(int d, const double* degrees, double* Q) {
   // Columns q1 = e1, q2 = (c12, s12, 0), q3 = (c13, y, z) with q2 . q3 = c23 and |q3| = 1.
   const double y = (c23 - c12 * c13) / s12;
   const double z2 = 1 - c13 * c13 - y * y;
-  if (!(z2 > 0)) return false;
+  // A (nearly) flat trihedron would make det Q vanish up to rounding: refuse it.
+  if (!(z2 > 1e-12)) return false;
   const double q[9] = {1, c12, c13, 0, s12, y, 0, 0, std::sqrt(z2)};
   for (int i = 0; i < 9; ++i) Q[i] = q[i];
   return true;

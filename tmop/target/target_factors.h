@@ -58,7 +58,8 @@ void compose_factors(CellType type, const TargetFactors& f, double* W);
 bool orientation_from_axes(int d, const double* axes, double* R);  // R: 3 x 3 storage
 // skew: the angle between the first two columns (2D: 1 value) or the angles (phi12, phi13,
 //   phi23) between columns 1-2, 1-3, 2-3 (3D), in degrees, each in (0, 180). False outside
-//   that range or when the three angles do not make a trihedron (no positive volume).
+//   that range or when the three angles do not make a trihedron (no volume, or a volume
+//   below 1e-6 of the unit cube's).
 bool skew_from_angles(int d, const double* degrees, double* Q);  // Q: 3 x 3 storage
 // aspect: d positive relative column lengths (only their ratios matter), normalised to
 //   product 1. False for a non-positive or non-finite length.
