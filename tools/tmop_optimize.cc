@@ -62,8 +62,8 @@ DEFINE_string(reference, "",
               "factors come from).");
 DEFINE_string(target_size, "equal",
               "--target=composed: size h (equivalent edge length): equal (mean of the input), "
-              "initial (the input's at each point), ideal (1), field:NAME (point data), or a "
-              "length in mesh units.");
+              "initial (the input's at each point), ideal (as --target=ideal_unit), field:NAME "
+              "(point data, the input's units), or a length in the input's units.");
 DEFINE_string(target_orientation, "identity",
               "--target=composed: rotation: identity, initial, field:NAME (point-data vectors: "
               "2D the first axis, 3D two axes = 6 components), angle:DEG (2D), or axis "

@@ -24,10 +24,11 @@
 //   skew         2D: 1, the angle between W's columns; 3D: 3, the angles (phi12, phi13, phi23);
 //                degrees in (0, 180)
 //   aspect       d positive relative lengths of W's columns (only ratios matter)
-// "ideal" orientation is the identity of the frame the mesh is in, as for every ideal target;
-// constant, field and function orientations are directions in the user's frame
-// (TargetSpec::frame maps them). Surface meshes (2D cells in 3D) take their Jacobians in the
-// cell's own plane (target_jacobian, target.h), so their orientation must be ideal or initial.
+// "ideal" orientation is the identity of the frame the mesh is in (in a stage: the principal
+// axes it solves in), as for every ideal target; constant, field and function orientations are
+// directions in the user's frame (TargetSpec::frame maps them): "1,0" is the user's x axis. Surface
+// meshes (2D cells in 3D) take their Jacobians in the cell's own plane (target_jacobian, target.h),
+// so their orientation must be ideal or initial.
 //
 // With every factor from the initial mesh, W = A at every sample point (to rounding): "keep what
 // is there", as TargetType::kReference. With every factor ideal and the size equal, W is the
