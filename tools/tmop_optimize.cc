@@ -3,6 +3,8 @@
 //   tmop_optimize --input=IN --output=OUT [--recipe=NAME] [--boundary=fixed|slide]
 //                 [--geometry=SPEC] [--metric=NAME]
 //                 [--target=NAME] [--reference=FILE] [--sample_points=RULE] [--power=P]
+//                 [--target=composed --target_size=SRC --target_orientation=SRC
+//                  --target_shape=ideal|initial --target_skew=SRC --target_aspect=SRC]
 //                 [--solver=lm|dogleg] [--linear_solver=auto|cholesky|cgnr]
 //                 [--max_iterations=N] [--threads=N] [--report=FILE.json] [--verbose]
 //
@@ -51,10 +53,31 @@ DEFINE_string(metric, "", "Metric name (default: the recipe's); see --list_metri
 DEFINE_bool(list_metrics, false, "Print the metric names for 2D and 3D meshes and exit.");
 DEFINE_string(target, "equal_size",
               "Target construction: ideal_unit, equal_size, local_size, reference, "
-              "lambda_identity, size_field.");
+              "lambda_identity, size_field, composed (W = size x orientation x skew x aspect, "
+              "each factor from --target_size, --target_orientation, --target_shape / "
+              "--target_skew / --target_aspect; docs/theory.md).");
 DEFINE_string(reference, "",
               "Mesh with the same vertices and cells whose Jacobians are the targets "
-              "(implies --target=reference).");
+              "(implies --target=reference; with --target=composed it is the mesh the 'initial' "
+              "factors come from).");
+DEFINE_string(target_size, "equal",
+              "--target=composed: size h (equivalent edge length): equal (mean of the input), "
+              "initial (the input's at each point), ideal (as --target=ideal_unit), field:NAME "
+              "(point data, the input's units), or a length in the input's units.");
+DEFINE_string(target_orientation, "identity",
+              "--target=composed: rotation: identity, initial, field:NAME (point-data vectors: "
+              "2D the first axis, 3D two axes = 6 components), angle:DEG (2D), or axis "
+              "components (2D: x,y; 3D: x1,y1,z1,x2,y2,z2).");
+DEFINE_string(target_shape, "ideal",
+              "--target=composed: skew and aspect together: ideal (the element type's ideal "
+              "shape) or initial (the input's shape at each point).");
+DEFINE_string(target_skew, "",
+              "--target=composed: angles between the element's edge directions (default: "
+              "--target_shape): ideal, initial, field:NAME, or degrees (2D: PHI; 3D: "
+              "PHI12,PHI13,PHI23).");
+DEFINE_string(target_aspect, "",
+              "--target=composed: relative edge lengths (default: --target_shape): ideal, "
+              "initial, field:NAME, or lengths (2D: L1,L2; 3D: L1,L2,L3).");
 DEFINE_string(size_field, "", "Point-data array of target edge lengths (--target=size_field).");
 DEFINE_string(sample_points, "default", "Sample rule: default, corners, nodes, centroid, gauss.");
 DEFINE_double(power, 0,
@@ -193,10 +216,41 @@ int main(int argc, char** argv) {
   if (FLAGS_power > 0) opt.power = FLAGS_power;
   if (!sample_rule_from_name(FLAGS_sample_points, &opt.rule))
     return fail(2, "unknown --sample_points '" + FLAGS_sample_points + "'");
-  std::string target = FLAGS_reference.empty() ? FLAGS_target : "reference";
+  const bool composed = FLAGS_target == "composed";
+  std::string target = FLAGS_reference.empty() || composed ? FLAGS_target : "reference";
   if (!target_type_from_name(target, &opt.target.type))
-    return fail(2, "unknown --target '" + target + "'");
+    return fail(2, "unknown --target '" + target +
+                       "' (known: ideal_unit, equal_size, local_size, size_field, reference, "
+                       "lambda_identity, composed)");
   opt.target.size_field = FLAGS_size_field;
+  {
+    const char* factor_flags[] = {"target_size", "target_orientation", "target_shape",
+                                  "target_skew", "target_aspect"};
+    for (const char* f : factor_flags)
+      if (!composed && !gflags::GetCommandLineFlagInfoOrDie(f).is_default)
+        return fail(2, std::string("--") + f + " needs --target=composed");
+    if (FLAGS_target_shape != "ideal" && FLAGS_target_shape != "initial")
+      return fail(2, "--target_shape must be ideal or initial, not '" + FLAGS_target_shape +
+                         "' (--target_skew and --target_aspect take the other sources)");
+    ComposedTarget& c = opt.target.composed;
+    const struct {
+      FactorKind kind;
+      const char* flag;
+      const std::string& text;
+      TargetFactor* factor;
+    } factors[] = {
+        {FactorKind::kSize, "target_size", FLAGS_target_size, &c.size},
+        {FactorKind::kOrientation, "target_orientation", FLAGS_target_orientation, &c.orientation},
+        {FactorKind::kSkew, "target_skew",
+         FLAGS_target_skew.empty() ? FLAGS_target_shape : FLAGS_target_skew, &c.skew},
+        {FactorKind::kAspect, "target_aspect",
+         FLAGS_target_aspect.empty() ? FLAGS_target_shape : FLAGS_target_aspect, &c.aspect},
+    };
+    for (const auto& f : factors) {
+      const Status ps = parse_target_factor(f.kind, f.text, f.factor);
+      if (!ps.ok()) return fail(2, std::string("--") + f.flag + ": " + ps.message());
+    }
+  }
   if (!solver_method_from_name(FLAGS_solver, &opt.solver.method))
     return fail(2, "unknown --solver '" + FLAGS_solver + "' (lm, dogleg)");
   if (!linear_solver_from_name(FLAGS_linear_solver, &opt.solver.linear_solver))
@@ -240,6 +294,11 @@ int main(int argc, char** argv) {
         orientation.positive + orientation.negative + orientation.mixed_or_zero);
     reorient(&mesh);
     if (opt.target.reference) reorient(&reference);
+  }
+  // Value counts, fields and the reference's topology are usage errors: say so before running.
+  if (composed) {
+    s = check_composed_target(mesh, opt.target);
+    if (!s.ok()) return fail(2, FLAGS_input + ": " + s.message());
   }
 
   Mesh moved;

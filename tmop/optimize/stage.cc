@@ -659,7 +659,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   for (std::size_t t = 0; t < spec.terms.size(); ++t) {
     TargetSpec target = spec.terms[t].target;
     Mesh reference_copy;
-    if (target.type == TargetType::kReference && target.reference) {
+    if ((target.type == TargetType::kReference || target.type == TargetType::kComposed) &&
+        target.reference) {
       reference_copy = *target.reference;
       if (reference_copy.num_vertices() == mesh->num_vertices()) {
         Normalization rn = norm;  // same transform as the mesh: targets stay consistent
@@ -667,18 +668,12 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       }
       target.reference = &reference_copy;
     }
-    Mesh* source = mesh;
-    Mesh field_copy;
-    if (target.type == TargetType::kIdealSizeField) {
-      field_copy.space_dim = mesh->space_dim;
-      field_copy = *mesh;
-      for (DataArray& a : field_copy.point_data)
-        if (a.name == target.size_field)
-          for (double& v : a.values) v /= norm.f.length;
-      source = &field_copy;
-    }
+    // Sizes, directions and positions the user gives are in the input's frame.
+    for (int a = 0; a < 3; ++a) target.frame.centre[a] = norm.f.centre[a];
+    target.frame.length = norm.f.length;
+    for (int a = 0; a < 9; ++a) target.frame.rotation[a] = norm.f.rotation[a];
     std::vector<double> W;
-    Status s = build_targets(*source, points, target, &W);
+    Status s = build_targets(*mesh, points, target, &W);
     if (!s.ok()) return fail(s.message());
     double grad[kMaxCellNodes * 3], Winv[9];
     for (std::size_t p = 0; p < P; ++p) {

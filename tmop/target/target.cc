@@ -19,6 +19,7 @@ const NameOf kNames[] = {
     {TargetType::kIdealUnitSize, "ideal_unit"},  {TargetType::kIdealEqualSize, "equal_size"},
     {TargetType::kIdealLocalSize, "local_size"}, {TargetType::kIdealSizeField, "size_field"},
     {TargetType::kReference, "reference"},       {TargetType::kMeanEdgeLength, "lambda_identity"},
+    {TargetType::kComposed, "composed"},
 };
 
 double det(const double* A, int d) {
@@ -61,12 +62,12 @@ void surface_reference(const double* A, double* W) {
   W[3] = l1 > 0 ? measure_det(A, 3, 2) / l1 : 0;
 }
 
-bool same_topology(const Mesh& a, const Mesh& b) {
+}  // namespace
+
+bool reference_matches(const Mesh& a, const Mesh& b) {
   return a.num_vertices() == b.num_vertices() && a.space_dim == b.space_dim &&
          a.cell_types == b.cell_types && a.cell_nodes == b.cell_nodes;
 }
-
-}  // namespace
 
 bool target_type_from_name(const std::string& name, TargetType* type) {
   for (const NameOf& n : kNames)
@@ -98,6 +99,30 @@ double cell_equivalent_edge(const Mesh& mesh, int c) {
   return volume < 0 ? -h : h;
 }
 
+double mean_equivalent_edge(const Mesh& mesh) {
+  const int d = mesh.dim();
+  double sum = 0;
+  int n = 0;
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    if (mesh.is_element(c, d)) {
+      sum += std::abs(cell_equivalent_edge(mesh, c));
+      ++n;
+    }
+  return n ? sum / n : 1.0;
+}
+
+void target_jacobian(const Mesh& mesh, int c, const double* xi, double* A) {
+  const CellType t = mesh.cell_type(c);
+  double x[kMaxCellNodes * 3];
+  gather(mesh, c, x);
+  cell_jacobian(t, x, mesh.space_dim, xi, A);
+  if (mesh.space_dim != cell_dim(t)) {
+    double a[6];
+    std::copy(A, A + 6, a);
+    surface_reference(a, A);
+  }
+}
+
 SampleSet canonical_sample_set(const Mesh& mesh, SampleRule rule) {
   SampleSet set;
   const int d = mesh.dim();
@@ -121,20 +146,17 @@ Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec
     return Status::Failure("targets: elements of dimension " + std::to_string(d) + " in " +
                            std::to_string(mesh.space_dim) + "D space");
   const Mesh& ref = spec.reference ? *spec.reference : mesh;
-  if (spec.type == TargetType::kReference && !same_topology(mesh, ref))
+  if ((spec.type == TargetType::kReference || spec.type == TargetType::kComposed) &&
+      !reference_matches(mesh, ref))
     return Status::Failure("reference mesh: its vertices and cells do not match the mesh's");
+  if (spec.type == TargetType::kComposed) return build_composed_targets(mesh, points, spec, W);
+  if (!(spec.frame.length > 0) || !std::isfinite(spec.frame.length))
+    return Status::Failure("target frame: the length scale must be positive");
 
   // One size for the whole mesh where the target asks for it.
   double h_all = 1.0;
   if (spec.type == TargetType::kIdealEqualSize) {
-    double sum = 0;
-    int n = 0;
-    for (int c = 0; c < mesh.num_cells(); ++c)
-      if (mesh.is_element(c, d)) {
-        sum += std::abs(cell_equivalent_edge(mesh, c));
-        ++n;
-      }
-    h_all = n ? sum / n : 1.0;
+    h_all = mean_equivalent_edge(mesh);
   } else if (spec.type == TargetType::kMeanEdgeLength) {
     const auto edges = mesh_edges(mesh);
     double sum = 0;
@@ -161,7 +183,7 @@ Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec
 
   std::vector<double> out;
   out.reserve(points.size() * d * d);
-  double x[kMaxCellNodes * 3], N[kMaxCellNodes];
+  double N[kMaxCellNodes];
   int cached_cell = -1;
   double h_cell = h_all, ideal[9];
   for (std::size_t p = 0; p < points.size(); ++p) {
@@ -176,16 +198,10 @@ Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec
         if (!(h_cell > 0))
           return Status::Failure("cell " + std::to_string(c) + ": zero volume, no local size");
       }
-      if (spec.type == TargetType::kReference) gather(ref, c, x);
     }
     double w[9];
     if (spec.type == TargetType::kReference) {
-      cell_jacobian(t, x, ref.space_dim, xi, w);
-      if (ref.space_dim != d) {
-        double a[6];
-        std::copy(w, w + 6, a);
-        surface_reference(a, w);
-      }
+      target_jacobian(ref, c, xi, w);
       const double dw = det(w, d);
       if (!(std::abs(dw) > 0) || !std::isfinite(dw))
         return Status::Failure("cell " + std::to_string(c) +
@@ -196,6 +212,7 @@ Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec
         shape_values(t, xi, N);
         h = 0;
         for (int i = 0; i < mesh.cell_size(c); ++i) h += N[i] * field->values[mesh.cell(c)[i]];
+        h /= spec.frame.length;  // user units -> the mesh's
         if (!(h > 0))
           return Status::Failure("size field '" + spec.size_field + "' is not positive in cell " +
                                  std::to_string(c));
