@@ -79,6 +79,8 @@ DEFINE_string(solver, "lm", "lm or dogleg.");
 DEFINE_int32(cholesky_max_free_coordinates, -1,
              "auto picks sparse Cholesky up to this many free coordinates in 3D (-1: the library's "
              "default, SolverOptions::cholesky_max_free_coordinates_3d).");
+DEFINE_double(power, 0,
+              "Shape: power order of the objective (0: the recipe's default, 2; 1: plain mean).");
 DEFINE_double(function_tolerance, -1,
               "Relative objective decrease that ends a solve (-1: the library's default).");
 DEFINE_bool(verbose, false, "Print the solver's progress lines.");
@@ -514,6 +516,7 @@ int run_recipe(const Context& ctx, Json* j) {
     tmop::Mesh mesh = ctx.mesh;
     tmop::ShapeOptions shape;
     shape.metric = FLAGS_metric;
+    shape.power = FLAGS_power;
     shape.target = target_spec(ctx);
     shape.solver = solver_options(ctx);
     timing.start();
@@ -797,6 +800,7 @@ int main(int argc, char** argv) {
       .integer("threads", FLAGS_threads > 0 ? FLAGS_threads : std::thread::hardware_concurrency())
       .integer("repeat", FLAGS_repeat)
       .str("linear_solver_flag", FLAGS_linear_solver)
+      .num("power_flag", FLAGS_power)
       .str("solver_flag", FLAGS_solver);
 
   int rc = 0;

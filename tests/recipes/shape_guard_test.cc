@@ -19,8 +19,10 @@ using testing_recipes::exit_code;
 using testing_recipes::have_gmsh;
 
 Mesh hex_sector() {
-  const std::string dir = "/tmp/tmop_shape_guard/";
-  exit_code("mkdir -p " + dir);
+  // One directory per call: ctest runs the parameterised cases in parallel.
+  char templ[] = "/tmp/tmop_shape_guard_XXXXXX";
+  if (!mkdtemp(templ)) return Mesh();
+  const std::string dir = std::string(templ) + "/";
   std::ofstream(dir + "h.geo")
       << "SetFactory(\"OpenCASCADE\");\n"
          "Disk(1) = {0, 0, 0, 1, 0.7};\n"
@@ -35,6 +37,7 @@ Mesh hex_sector() {
   if (exit_code("gmsh -3 " + dir + "h.geo -o " + dir + "h.msh -format msh41 > /dev/null 2>&1") == 0)
     read_mesh(dir + "h.msh", &m);
   m.remove_lower_dimensional_cells();
+  exit_code("rm -rf " + dir);
   return m;
 }
 
