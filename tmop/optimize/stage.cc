@@ -9,9 +9,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <deque>
 #include <limits>
 #include <thread>
+#include <unordered_map>
 
 #include "tmop/element/ideal_element.h"
 #include "tmop/element/shape.h"
@@ -81,6 +83,45 @@ void compute_T(int n, int d, const Mesh& mesh, const std::int32_t* nodes, const 
   }
 }
 
+// G = W^-T grad N per sample point and term, each distinct block stored once: uniform targets
+// (ideal shapes of one size) give one block per cell type and point of the rule, so the table
+// is tiny instead of n x d doubles per point (96 MB for 1M tets), and the blocks stay in cache.
+struct GTable {
+  std::vector<double> values;
+  std::vector<std::int64_t> offset;  // per sample point
+  const double* at(std::size_t p) const { return values.data() + offset[p]; }
+};
+
+// Builds a GTable from blocks given one at a time (`add`), sharing bit-identical ones.
+class GTableBuilder {
+ public:
+  explicit GTableBuilder(GTable* table, std::size_t points) : table_(table) {
+    table_->offset.reserve(points);
+  }
+  void add(const double* block, int size) {
+    std::uint64_t h = 1469598103934665603ULL ^ static_cast<std::uint64_t>(size);
+    for (int k = 0; k < size; ++k) {
+      std::uint64_t bits;
+      std::memcpy(&bits, block + k, sizeof bits);
+      h = (h ^ bits) * 1099511628211ULL;
+    }
+    std::vector<std::int64_t>& bucket = index_[h];
+    for (std::int64_t off : bucket)
+      if (std::memcmp(table_->values.data() + off, block, size * sizeof(double)) == 0) {
+        table_->offset.push_back(off);
+        return;
+      }
+    const std::int64_t off = static_cast<std::int64_t>(table_->values.size());
+    table_->values.insert(table_->values.end(), block, block + size);
+    bucket.push_back(off);
+    table_->offset.push_back(off);
+  }
+
+ private:
+  GTable* table_;
+  std::unordered_map<std::uint64_t, std::vector<std::int64_t>> index_;
+};
+
 // Per-cell tangent frames of a surface mesh (2D cells in 3D): 6 values per cell, the columns t1,
 // t2 of an orthonormal basis with t1 x t2 = n. Empty for planar and volume meshes.
 struct Frames {
@@ -135,15 +176,14 @@ Frames own_frames(const Mesh& mesh) {
 
 // min det T over the sample points of term 0, and the cells where it is <= 0.
 double min_target_det(const Mesh& mesh, const std::vector<std::int32_t>& point_cell,
-                      const std::vector<double>& G, const std::vector<std::int64_t>& g_offset,
-                      std::vector<int>* bad, const Frames& frames) {
+                      const GTable& G, std::vector<int>* bad, const Frames& frames) {
   const int d = mesh.dim();
   double worst = std::numeric_limits<double>::infinity();
   if (bad) bad->clear();
   for (std::size_t p = 0; p < point_cell.size(); ++p) {
     const int c = point_cell[p];
     double T[9];
-    compute_T(mesh.cell_size(c), d, mesh, mesh.cell(c), G.data() + g_offset[p], T, frames.cell(c));
+    compute_T(mesh.cell_size(c), d, mesh, mesh.cell(c), G.at(p), T, frames.cell(c));
     const double det = det_d(T, d);
     worst = std::min(worst, det);
     if (bad && !(det > 0) && (bad->empty() || bad->back() != c)) bad->push_back(c);
@@ -400,9 +440,7 @@ class StageCallback final : public ceres::IterationCallback {
 };
 
 // Exact mean of sum_t c_t mu_t over elements (weights of a cell's points sum to 1).
-double exact_objective(const Mesh& mesh, const StageSpec& spec,
-                       const std::vector<std::vector<double>>& G,
-                       const std::vector<std::int64_t>& g_offset,
+double exact_objective(const Mesh& mesh, const StageSpec& spec, const std::vector<GTable>& G,
                        const std::vector<std::int32_t>& cells,
                        const std::vector<double>& point_weight, int num_elements,
                        const Frames& frames) {
@@ -415,12 +453,37 @@ double exact_objective(const Mesh& mesh, const StageSpec& spec,
       const double c_t = spec.terms[t].weights.empty() ? 1.0 : spec.terms[t].weights[p];
       if (c_t == 0) continue;
       double T[9];
-      compute_T(n, d, mesh, mesh.cell(c), G[t].data() + g_offset[p], T, frames.cell(c));
+      compute_T(n, d, mesh, mesh.cell(c), G[t].at(p), T, frames.cell(c));
       sum += point_weight[p] * c_t * spec.terms[t].metric->value(T);
     }
   }
   return sum / std::max(1, num_elements);
 }
+
+// What a SamplePointCost is made of (stage.cc shares identical ones).
+struct CostKey {
+  int n, nt;
+  const Metric* metric[kMaxTerms];
+  const double* G[kMaxTerms];
+  double w[kMaxTerms];
+  bool operator==(const CostKey& o) const {
+    if (n != o.n || nt != o.nt) return false;
+    for (int k = 0; k < nt; ++k)
+      if (metric[k] != o.metric[k] || G[k] != o.G[k] || w[k] != o.w[k]) return false;
+    return true;
+  }
+};
+struct CostKeyHash {
+  std::size_t operator()(const CostKey& k) const {
+    std::size_t h = std::hash<int>()(k.n * 8 + k.nt);
+    for (int t = 0; t < k.nt; ++t) {
+      h = h * 1000003 ^ std::hash<const void*>()(k.metric[t]);
+      h = h * 1000003 ^ std::hash<const void*>()(k.G[t]);
+      h = h * 1000003 ^ std::hash<double>()(k.w[t]);
+    }
+    return h;
+  }
+};
 
 // Spreads the low 21 bits of v to every third bit (Morton interleaving).
 std::uint64_t spread3(std::uint64_t v) {
@@ -651,11 +714,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   std::vector<double> shortest;
   cell_edge_lengths(*mesh, &shortest);
 
-  // Targets -> G per term per point, packed: point p's n x d block starts at g_offset[p].
-  std::vector<std::int64_t> g_offset(P + 1, 0);
-  for (std::size_t p = 0; p < P; ++p)
-    g_offset[p + 1] = g_offset[p] + std::int64_t(mesh->cell_size(point_cell[p])) * d;
-  std::vector<std::vector<double>> G(spec.terms.size(), std::vector<double>(g_offset[P]));
+  // Targets -> G per term per point (GTable: identical blocks shared).
+  std::vector<GTable> G(spec.terms.size());
   for (std::size_t t = 0; t < spec.terms.size(); ++t) {
     TargetSpec target = spec.terms[t].target;
     Mesh reference_copy;
@@ -675,13 +735,16 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     std::vector<double> W;
     Status s = build_targets(*mesh, points, target, &W);
     if (!s.ok()) return fail(s.message());
-    double grad[kMaxCellNodes * 3], Winv[9];
+    double grad[kMaxCellNodes * 3], Winv[9], block[kMaxCellNodes * 3];
+    GTableBuilder builder(&G[t], P);
     for (std::size_t p = 0; p < P; ++p) {
       const CellType type = mesh->cell_type(point_cell[p]);
       if (!inverse_d(W.data() + p * d * d, d, Winv))
         return fail("cell " + std::to_string(point_cell[p]) + ": singular target matrix");
       shape_gradients(type, &points.xi[3 * p], grad);
-      make_G(cell_num_nodes(type), d, grad, Winv, G[t].data() + g_offset[p]);
+      const int n = cell_num_nodes(type);
+      make_G(n, d, grad, Winv, block);
+      builder.add(block, n * d);
     }
   }
 
@@ -694,10 +757,10 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   bool barrier = false;
   for (const TermSpec& t : spec.terms) barrier |= t.metric->barrier();
   result->initial_objective =
-      exact_objective(*mesh, spec, G, g_offset, point_cell, point_weight, num_elements, frames);
+      exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames);
 
   std::vector<int> bad;
-  result->min_det_before = min_target_det(*mesh, point_cell, G[0], g_offset, &bad, frames);
+  result->min_det_before = min_target_det(*mesh, point_cell, G[0], &bad, frames);
   if (barrier && bad.empty() && before.inverted > 0) bad = inverted_cells(*mesh, table, frames);
   if (barrier && !bad.empty())
     return fail("barrier metric on an inverted mesh (untangle first): inverted cells " +
@@ -716,8 +779,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       for (int i = 0; i < mesh->cell_size(c); ++i) all_fixed &= fixed[mesh->cell(c)[i]] != 0;
       if (!all_fixed) continue;
       double T[9];
-      compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), G[0].data() + g_offset[p], T,
-                frames.cell(c));
+      compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), G[0].at(p), T, frames.cell(c));
       if (!(det_d(T, d) > 0)) stuck.push_back(c);
     }
     if (!stuck.empty())
@@ -735,6 +797,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   const bool guard = barrier && validity_rule(rule) != rule;
   std::deque<SamplePointCost> costs;
   std::vector<int> cost_point;  // sample point of each cost
+  // Blocks whose data coincide share one cost object (DESIGN.md section 9) - uniform targets
+  // make that every block of a cell type and point - unless a block carries its own state: a
+  // surface frame, a corner guard, or the reweighting multiplier of a power mean.
+  const bool share = !surface && !guard && !(spec.power > 1);
+  std::unordered_map<CostKey, SamplePointCost*, CostKeyHash> shared_costs;
   std::vector<double*> blocks;
   std::vector<char> in_problem(mesh->num_vertices(), 0);
   // Residual blocks in space-filling-curve order of their cells: Ceres numbers the parameter
@@ -758,9 +825,31 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                     " is negative or not finite");
       // A term of zero weight still guards its barrier: residuals() is evaluated.
       terms[nt].metric = spec.terms[t].metric.get();
-      terms[nt].G = G[t].data() + g_offset[p];
+      terms[nt].G = G[t].at(p);
       terms[nt].sqrt_weight = std::sqrt(point_weight[p] * std::max(c_t, 0.0));
       ++nt;
+    }
+    blocks.clear();
+    for (int i = 0; i < n; ++i) {
+      blocks.push_back(mesh->vertex(nodes[i]));
+      in_problem[nodes[i]] = 1;
+    }
+    if (share) {
+      // One cost object for every block with the same node count, metrics, G and weights.
+      CostKey key{n, nt, {}, {}, {}};
+      for (int k = 0; k < nt; ++k) {
+        key.metric[k] = terms[k].metric;
+        key.G[k] = terms[k].G;
+        key.w[k] = terms[k].sqrt_weight;
+      }
+      auto it = shared_costs.find(key);
+      if (it == shared_costs.end()) {
+        costs.emplace_back(n, d, nt, terms);
+        cost_point.push_back(static_cast<int>(p));
+        it = shared_costs.emplace(key, &costs.back()).first;
+      }
+      problem.AddResidualBlock(it->second, nullptr, blocks);
+      continue;
     }
     costs.emplace_back(n, d, nt, terms);
     if (surface) costs.back().set_surface_frame(frames.cell(c));
@@ -769,11 +858,6 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       costs.back().set_guard(g.data(), static_cast<int>(g.size()) / (n * d));
     }
     cost_point.push_back(static_cast<int>(p));
-    blocks.clear();
-    for (int i = 0; i < n; ++i) {
-      blocks.push_back(mesh->vertex(nodes[i]));
-      in_problem[nodes[i]] = 1;
-    }
     problem.AddResidualBlock(&costs.back(), nullptr, blocks);
   }
   std::vector<int> free_vertices;
@@ -870,7 +954,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     if (frame_round > 0) {
       const std::vector<double> previous_frames = frames.F;
       update_frames();
-      if (barrier && !(min_target_det(*mesh, point_cell, G[0], g_offset, nullptr, frames) > 0)) {
+      if (barrier && !(min_target_det(*mesh, point_cell, G[0], nullptr, frames) > 0)) {
         frames.F = previous_frames;
         if (!surface_rounds || round_cap <= 1) {
           if (surface_rounds) mesh->coords = round_start;
@@ -896,7 +980,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       const double theta = untangle_metric->theta();
       double eps = untangle_metric->eps();
       so.max_num_iterations = spec.untangle_round_iterations;
-      const int max_rounds = min_target_det(*mesh, point_cell, G[0], g_offset, nullptr, frames) > 0
+      const int max_rounds = min_target_det(*mesh, point_cell, G[0], nullptr, frames) > 0
                                  ? 0
                                  : spec.untangle_max_rounds;
       for (int round = 0; round < max_rounds; ++round) {
@@ -905,7 +989,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
         for (SamplePointCost& cost : costs) cost.set_metric(0, metrics.back().get());
         if (!solve()) return fail("solver failed: " + summary.message);
         result->final_eps = eps;
-        const double det_min = min_target_det(*mesh, point_cell, G[0], g_offset, nullptr, frames);
+        const double det_min = min_target_det(*mesh, point_cell, G[0], nullptr, frames);
         if (det_min > 0) break;
         const double energy = summary.final_cost;
         const double sigma = std::max(1 - energy / summary.initial_cost, 0.1);
@@ -953,12 +1037,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
 
   // Ceres leaves the best parameters in place; the callback may have seen a later state.
   const IterationRecord after = measure(*mesh, table, frames);
-  result->min_det_after =
-      min_target_det(*mesh, point_cell, G[0], g_offset, &result->inverted_cells, frames);
+  result->min_det_after = min_target_det(*mesh, point_cell, G[0], &result->inverted_cells, frames);
   result->inverted_after = after.inverted;
   result->min_quality_after = after.min_quality;
   result->final_objective =
-      exact_objective(*mesh, spec, G, g_offset, point_cell, point_weight, num_elements, frames);
+      exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames);
   result->termination = callback.reason().empty() ? summary.message : callback.reason();
   if (spec.untangle) {
     char eps_text[32];
