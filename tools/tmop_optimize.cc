@@ -86,7 +86,9 @@ DEFINE_double(power, 0,
               "size_adapt: 1).");
 DEFINE_string(solver, "lm", "Trust-region method: lm (Levenberg-Marquardt) or dogleg.");
 DEFINE_string(linear_solver, "auto", "auto, cholesky (sparse normal Cholesky) or cgnr.");
-DEFINE_int32(max_iterations, 200, "Maximum solver iterations per stage.");
+DEFINE_int32(max_iterations, 200,
+             "Maximum Ceres iterations per solve of a stage (shape stages: per reweighting "
+             "round; untangling: rounds of 5 iterations, up to 60 eps rounds).");
 DEFINE_double(max_seconds, 1e9, "Wall-clock limit per stage, seconds.");
 DEFINE_double(function_tolerance, 1e-5,
               "A solve ends when an iteration lowers the objective by less than this fraction "
