@@ -73,8 +73,8 @@ TEST(SliverRecipe, RemovesSliversAndKeepsTheRest) {
       before.min_dihedral.min, before.max_dihedral.max, after.min_dihedral.min,
       after.max_dihedral.max, kept, far);
   ASSERT_GT(far, 100);
-  // Measured 368 of 496 (74 %) with the exact mu_304 (the seed's formula); the earlier polar
-  // surrogate, which grows more slowly on bad tets, kept 387 (78 %).
+  // Measured 443 of 496 (89 %) with the keep term at the seed's magnitude; 368 (74 %) with half
+  // of it (the barrier form |T2 - I|^2 / (2 det T2) unscaled).
   EXPECT_GE(kept, 0.7 * far);
 }
 

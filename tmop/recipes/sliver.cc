@@ -43,7 +43,9 @@ Status remove_slivers(Mesh* mesh, const SliverOptions& options, RecipeResult* re
         }
       }
       c_shape[p] = c;
-      c_keep[p] = 1 - c;
+      // The barrier form |T2 - I|^2 / (2 det T2) is half the seed's |T2 - I|^2 near T2 = I; the
+      // factor 2 restores the seed's magnitude (|T2 - I|^2 / det T2 = |T2 - I|^2 (1 + O(T2 - I))).
+      c_keep[p] = 2 * (1 - c);
     }
   }
   if (tets == 0) return Status::Failure("recipe sliver: the mesh has no tets");

@@ -2,8 +2,9 @@
 // Sliver removal that preserves a boundary layer (viscous CFD meshes): the seed's formula
 //   F = sum_k c_k (|T1|^3 / (3 sqrt3 det T1) - 1) + (1 - c_k) |T2 - I|^2,
 //   T1 = A W1^-1, W1 the regular tet (shape_cubic_barrier_3d, mu_304),
-//   T2 = A W2^-1, W2 the initial mesh's Jacobian (size_shape_orientation; its barrier form
-//        |T2 - I|^2 / (2 det T2) when the input is valid, which it must be: see below),
+//   T2 = A W2^-1, W2 the initial mesh's Jacobian (size_shape_orientation; in its barrier form
+//        |T2 - I|^2 / det T2, equal to |T2 - I|^2 to second order at T2 = I, because the input
+//        must be valid: see below),
 //   c_k = 1 / (1 + exp(-steepness (d_k - threshold))), d_k the element's max dihedral angle in
 //        the initial mesh, degrees.
 // Good elements (small max dihedral: the boundary layer's flat tets included) have c_k ~ 0 and
