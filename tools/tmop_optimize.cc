@@ -109,6 +109,10 @@ DEFINE_string(moved, "",
               "Recipe preserve: the mesh with its boundary moved (same vertices and cells as "
               "--input); the interior follows, keeping the input's element shapes and sizes.");
 DEFINE_double(shape_guard_weight, 1.0, "Recipe equal_edge: weight of the shape guard term.");
+DEFINE_double(layer_edge_ratio, 3,
+              "Recipe sliver: cells it keeps (max dihedral well below 135 deg) whose longest edge "
+              "is at least this many times their shortest are boundary-layer cells; the vertices "
+              "the layer shares with other cells are held. 0: nothing held.");
 DEFINE_int32(max_sweeps, 100, "Recipe laplace: maximum Gauss-Seidel sweeps.");
 DEFINE_bool(verbose, false, "Print a progress line per solver iteration.");
 
@@ -199,6 +203,7 @@ int main(int argc, char** argv) {
   if (FLAGS_max_iterations < 0) return fail(2, "--max_iterations must be >= 0");
   if (!(FLAGS_max_seconds > 0)) return fail(2, "--max_seconds must be > 0");
   if (!(FLAGS_function_tolerance >= 0)) return fail(2, "--function_tolerance must be >= 0");
+  if (!(FLAGS_layer_edge_ratio >= 0)) return fail(2, "--layer_edge_ratio must be >= 0");
   if (FLAGS_threads < 0) return fail(2, "--threads must be >= 0 (0: all cores)");
   if (!(FLAGS_power >= 1 || FLAGS_power == 0)) return fail(2, "--power must be >= 1 (or 0)");
   if (!(FLAGS_feature_angle > 0 && FLAGS_feature_angle < 180))
@@ -362,6 +367,7 @@ int main(int argc, char** argv) {
     sl.boundary = opt.boundary;
     sl.rule = opt.rule;
     sl.solver = opt.solver;
+    sl.layer_edge_ratio = FLAGS_layer_edge_ratio;
     s = remove_slivers(&mesh, sl, &result);
   } else if (FLAGS_recipe == "laplace") {
     LaplaceOptions l;
@@ -415,6 +421,9 @@ int main(int argc, char** argv) {
   }
   QualityReport quality_after = print_quality("after:", mesh);
   quality_after.opposite_convention = flipped;  // written back in the input's convention
+  if (result.layer_cells >= 0)
+    std::printf("boundary layer: %d cells, %d vertices held on its outer surface\n",
+                result.layer_cells, result.held_vertices);
   if (result.certified >= 0)
     std::printf("certified valid everywhere (Bernstein bound): %d of %d quadratic cells\n",
                 result.certified, result.certified + result.uncertified);

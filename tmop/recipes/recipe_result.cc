@@ -63,6 +63,8 @@ std::string recipe_json(const RecipeResult& r) {
       ", \"after\": " + record_json(r.after, false) +
       ", \"certified\": " + (r.certified < 0 ? "null" : std::to_string(r.certified)) +
       ", \"uncertified\": " + (r.uncertified < 0 ? "null" : std::to_string(r.uncertified)) +
+      ", \"layer_cells\": " + (r.layer_cells < 0 ? "null" : std::to_string(r.layer_cells)) +
+      ", \"held_vertices\": " + (r.held_vertices < 0 ? "null" : std::to_string(r.held_vertices)) +
       ", \"stages\": [";
   for (std::size_t i = 0; i < r.stages.size(); ++i) {
     const StageResult& st = r.stages[i];

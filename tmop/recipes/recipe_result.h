@@ -20,11 +20,15 @@ struct RecipeResult {
   // not proven (-1 when no certificate was attempted).
   int certified = -1, uncertified = -1;
   std::vector<int> uncertified_cells;
+  // Recipe sliver: boundary-layer cells found and the vertices held on the layer's outer
+  // surface (-1 for other recipes).
+  int layer_cells = -1, held_vertices = -1;
 };
 
 // JSON object (no trailing newline) with stable keys, numbers printed with %.17g:
 // {"recipe", "seconds", "before": {"min_quality", "inverted"}, "after": {...},
 //  "certified", "uncertified" (null when not attempted),
+//  "layer_cells", "held_vertices" (recipe sliver; null otherwise),
 //  "stages": [{"name", "linear_solver", "elements", "sample_points", "free_vertices",
 //   "initial_objective", "final_objective", "iterations", "termination", "seconds",
 //   "inverted_before", "inverted_after", "min_quality_before", "min_quality_after",
