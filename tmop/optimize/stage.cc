@@ -934,6 +934,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     return summary.termination_type != ceres::FAILURE;
   };
   int untangle_rounds = 0;
+  std::vector<double> multiplier;  // power-mean reweighting, per cost (non-decreasing)
   // Surface meshes solve in rounds: the tangent frames are held fixed during a solve and
   // refreshed at the new positions after it. A barrier round is kept only if no cell is folded
   // in the refreshed frames, i.e. against the surface where the cell now lies: a long solve can
@@ -1018,8 +1019,14 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
             mean += v[k] / costs.size();
           }
           if (!(mean > 0)) break;
-          for (std::size_t k = 0; k < costs.size(); ++k)
-            costs[k].set_weight_multiplier(std::pow(1 + v[k] / mean, spec.power - 1));
+          // Weights never decrease: reweighting from the current values alone oscillates
+          // (elements that were bad are relieved, their neighbours pay, and so on: 10k
+          // triangles ended with a worst mean ratio of 0.66 against 0.84 for the plain mean).
+          multiplier.resize(costs.size(), 1.0);
+          for (std::size_t k = 0; k < costs.size(); ++k) {
+            multiplier[k] = std::max(multiplier[k], std::pow(1 + v[k] / mean, spec.power - 1));
+            costs[k].set_weight_multiplier(multiplier[k]);
+          }
         }
         // Rounds before the last only steer the weights: a loose solve is enough.
         const bool last = round + 1 == rounds &&
