@@ -166,18 +166,19 @@ void read_medit(const std::string& path, const std::string& data, Mesh* mesh) {
   MeditReader(path, data, mesh).read();
 }
 
-void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out) {
-  const int d = mesh.space_dim;
+void check_medit_writable(const Mesh& mesh) {
   for (int c = 0; c < mesh.num_cells(); ++c) {
     bool known = false;
     for (const Keyword& k : kKeywords) known |= k.type == mesh.cell_types[c];
     if (!known)
       throw Error(std::string("cannot write ") + cell_name(mesh.cell_types[c]) +
-                  " cells to Medit .mesh");
-    for (int i = 0; i < mesh.cell_size(c); ++i)
-      if (mesh.cell(c)[i] < 0 || mesh.cell(c)[i] >= mesh.num_vertices())
-        throw Error("cannot write: cell " + std::to_string(c) + " refers to a missing vertex");
+                  " cells to Medit .mesh (cell " + std::to_string(c) + " is the first)");
   }
+}
+
+void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out) {
+  const int d = mesh.space_dim;
+  check_medit_writable(mesh);
   const DataArray* refs = nullptr;
   for (const DataArray& a : mesh.point_data)
     if (a.name == "medit:ref" && a.components == 1 &&
