@@ -105,6 +105,10 @@ TEST(BadInput, MessagesNameTheProblemAndItsPlace) {
       {"empty_facets.stl", "empty_facets.stl:3: expected 'facet' or 'endsolid', got 'endloop'"},
       {"nan_binary.stl", "nan_binary.stl:byte 174: coordinate of triangle 1 is not finite"},
       {"no_triangles_binary.stl", "no_triangles_binary.stl:byte 80: no triangles"},
+      // Said "offsets give 3 nodes, expected 3".
+      {"short_connectivity.vtu",
+       "short_connectivity.vtu:11: cell 1 (tri3) ends at offset 6, but the connectivity array has "
+       "only 5 values"},
   };
   for (const Expect& e : expects) {
     Mesh mesh;
