@@ -184,7 +184,11 @@ void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out
     if (a.name == "medit:ref" && a.components == 1 &&
         a.values.size() == static_cast<std::size_t>(mesh.num_vertices()))
       refs = &a;
-  out->append("MeshVersionFormatted 2\nDimension ");
+  // "Dimension" and its value on two lines, as Gmsh writes it: Gmsh 4.8's reader takes the line
+  // after "Dimension" as the value and recognises only "Dimension 3" on one line, so a one-line
+  // "Dimension 2" made it skip the Vertices keyword ("Wrong node index 0"). meshio and tmop
+  // read both forms.
+  out->append("MeshVersionFormatted 2\nDimension\n");
   append_int(out, d);
   out->append("\nVertices\n");
   append_int(out, mesh.num_vertices());
