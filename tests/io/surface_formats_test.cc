@@ -1,6 +1,6 @@
 // The surface formats .obj .off .ply .stl: writers refuse what a format cannot hold and leave no
 // file, check_writable says so beforehand, tmop's STL is strictly standard, and the readers keep
-// what is in the file (variants OpenMesh reads, non-manifold surfaces).
+// what is in the file (common variants, full-precision coordinates, non-manifold surfaces).
 #include <dirent.h>
 #include <gtest/gtest.h>
 
@@ -250,8 +250,29 @@ TEST(StlRead, BinaryWithASolidHeaderIsBinary) {
   EXPECT_EQ(test::diff_meshes(in, out), "");
 }
 
-// Three triangles on one edge: OpenMesh adds copies of vertices to keep its mesh manifold, tmop
-// keeps the file's connectivity.
+// OpenMesh read every coordinate through float32; tmop keeps the file's digits.
+TEST(SurfaceRead, AsciiCoordinatesAreReadAsDoubles) {
+  const std::string dir = test::temp_dir();
+  const std::string body[] = {"v 0.1 0.2 0.3\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+                              "OFF\n3 1 0\n0.1 0.2 0.3\n1 0 0\n0 1 0\n3 0 1 2\n",
+                              "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                              "property double y\nproperty double z\nelement face 1\n"
+                              "property list uchar int vertex_indices\nend_header\n"
+                              "0.1 0.2 0.3\n1 0 0\n0 1 0\n3 0 1 2\n"};
+  const char* ext[] = {"obj", "off", "ply"};
+  for (int i = 0; i < 3; ++i) {
+    const std::string path = dir + "/d." + ext[i];
+    spit(path, body[i]);
+    Mesh m;
+    const Status s = read_mesh(path, &m);
+    ASSERT_TRUE(s.ok()) << s.message();
+    EXPECT_EQ(m.vertex(0)[0], 0.1) << ext[i];
+    EXPECT_EQ(m.vertex(0)[2], 0.3) << ext[i];
+  }
+}
+
+// Three triangles on one edge: OpenMesh's reader added copies of vertices to keep its mesh
+// manifold; tmop keeps the file's connectivity.
 TEST(SurfaceRead, NonManifoldSurfaceReadsAsInTheFile) {
   const std::string dir = test::temp_dir();
   const std::string obj =
@@ -267,7 +288,7 @@ TEST(SurfaceRead, NonManifoldSurfaceReadsAsInTheFile) {
             (std::vector<std::int32_t>{0, 1, 4}));
 }
 
-// The scan must not be stricter than the formats: the variants OpenMesh reads are read.
+// The validation must not be stricter than the formats: the common variants are read.
 TEST(SurfaceRead, CommonVariantsAreAccepted) {
   const std::string dir = test::temp_dir();
   struct Case {
@@ -286,6 +307,8 @@ TEST(SurfaceRead, CommonVariantsAreAccepted) {
        "1 1 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n3 0 2 3 1 0 0\n",
        2},
       {"same_line.off", "OFF 4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 3 2\n", 1},
+      // A face colour index of -1: OpenMesh's OFF reader allocated 16 GB on this.
+      {"colour_index.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 -1\n", 1},
       {"meshio.off",
        "OFF\n# Created by meshio\n\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 3 2\n", 2},
       {"n.ply",

@@ -33,9 +33,10 @@ void read_stl(const std::string& path, const std::string& data, Mesh* mesh);
 void write_stl(const Mesh& mesh, const WriteOptions& options, std::string* out);
 void check_stl_writable(const Mesh& mesh, const WriteOptions& options);
 
-// .obj .off .ply: OpenMesh reads and writes files itself, so these take paths (write goes to a
-// temporary path whose extension selects the format).
-void read_openmesh(const std::string& path, Mesh* mesh);
+// .obj .off .ply (ext without the dot, lower case): tmop reads them (surface_read.cc); OpenMesh
+// writes them to a path, a temporary one whose extension selects the format (openmesh_io.cc).
+void read_surface(const std::string& path, const std::string& ext, const std::string& data,
+                  Mesh* mesh);
 void write_openmesh(const std::string& path, const std::string& ext, const Mesh& mesh,
                     const WriteOptions& options);
 void check_openmesh_writable(const std::string& ext, const Mesh& mesh);

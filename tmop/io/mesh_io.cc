@@ -104,19 +104,17 @@ Status read_mesh(const std::string& path, Mesh* mesh) {
   mesh->clear();
   const std::string ext = extension(path);
   try {
-    if (is_openmesh_ext(ext)) {
-      io::read_openmesh(path, mesh);
-    } else {
-      if (ext != "msh" && ext != "vtk" && ext != "vtu" && ext != "mesh" && ext != "stl")
-        return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
-                               ")");
-      const std::string data = io::read_file(path);
-      if (ext == "msh") io::read_msh(path, data, mesh);
-      if (ext == "vtk") io::read_vtk(path, data, mesh);
-      if (ext == "vtu") io::read_vtu(path, data, mesh);
-      if (ext == "mesh") io::read_medit(path, data, mesh);
-      if (ext == "stl") io::read_stl(path, data, mesh);
-    }
+    if (ext != "msh" && ext != "vtk" && ext != "vtu" && ext != "mesh" && ext != "stl" &&
+        !is_openmesh_ext(ext))
+      return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
+                             ")");
+    const std::string data = io::read_file(path);
+    if (ext == "msh") io::read_msh(path, data, mesh);
+    if (ext == "vtk") io::read_vtk(path, data, mesh);
+    if (ext == "vtu") io::read_vtu(path, data, mesh);
+    if (ext == "mesh") io::read_medit(path, data, mesh);
+    if (ext == "stl") io::read_stl(path, data, mesh);
+    if (is_openmesh_ext(ext)) io::read_surface(path, ext, data, mesh);
     io::finish_read(mesh);
   } catch (const Error& e) {
     mesh->clear();

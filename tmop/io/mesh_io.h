@@ -7,8 +7,8 @@
 //   .vtu                  VTK XML UnstructuredGrid (read: ascii, base64 inline, raw appended,
 //                         zlib-compressed; write: ascii or base64 inline)
 //   .mesh                 Medit / INRIA ASCII
-//   .obj .off .ply        surface formats through OpenMesh (tri3 / quad4 cells; coordinates
-//                         pass through float32 in OpenMesh)
+//   .obj .off .ply        surface formats (tri3 / quad4 cells): read by tmop, written through
+//                         OpenMesh, which writes coordinates as float32
 //   .stl                  ASCII and binary STL (tri3 cells; binary holds float32)
 //
 // read_mesh: fills *mesh (cleared first) with Gmsh node order inside (io/ converts). space_dim is

@@ -1,5 +1,22 @@
-#include "tmop/io/surface_scan.h"
-
+// tmop/io/surface_read.cc
+// Reading .obj, .off and .ply (internal to io/; OpenMesh writes them, openmesh_io.cc). tmop reads
+// these itself because OpenMesh's readers report no positions and silently skip or alter what
+// they cannot use: a garbage OBJ line is ignored, a face with an out-of-range or repeated index is
+// dropped, NaN is read as a coordinate, a non-manifold face gets copies of its vertices, an OFF
+// '#' comment or counts on the OFF line give an empty mesh after seconds of parsing, and an OFF
+// face colour of -1 made it allocate 16 GB. Every problem is reported as "FILE:LINE: what" (text)
+// or "FILE:byte N: what" (binary data); declared counts are checked against the file size before
+// anything is allocated.
+//
+// Accepted: OBJ v (x y z [w] or x y z r g b), vt, vn, f with v, v/vt, v//vn or v/vt/vn corners
+// (indices among those defined so far; negative = relative), and the grouping, material and
+// free-form statements (skipped, as are l and p); anything else is an error. OFF with the ST, C, N
+// prefixes, '#' comments, counts on the header line, per-face colours; binary OFF in OpenMesh's
+// layout (little-endian int32 counts, float32 coordinates, int32 corner count and indices per
+// face). PLY ASCII and binary of both byte orders, any elements and properties; vertex x y z and
+// face vertex_indices (or vertex_index) are used. Faces must have 3 or 4 distinct corners (tmop
+// has triangles and quadrilaterals); data after the last record is an error. Coordinates are
+// read as the file has them: ASCII ones as doubles, binary ones as their float32 / float64.
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -7,11 +24,22 @@
 #include <limits>
 #include <string_view>
 
+#include "tmop/io/formats.h"
 #include "tmop/io/scanner.h"
 
 namespace tmop {
 namespace io {
 namespace {
+
+// What a reader collects: coordinates and faces with the byte offset of each face's record.
+struct SurfaceScan {
+  std::int64_t num_vertices = 0;
+  std::vector<double> coords;                 // 3 per vertex
+  std::vector<std::int32_t> face_offsets{0};  // face f has nodes [offsets[f], offsets[f + 1])
+  std::vector<std::int32_t> face_nodes;
+  std::vector<std::size_t> face_pos;
+  bool binary = false;  // positions are reported as bytes, not lines
+};
 
 constexpr std::int64_t kMaxCount = std::numeric_limits<std::int32_t>::max() - 1;
 
@@ -161,6 +189,7 @@ void scan_obj(const Scanner& s, std::string_view data, SurfaceScan* out) {
         if (!parse_double(tok[i].text, &v))
           s.fail_at(tok[i].pos, "expected a number, got '" + printable(tok[i].text) + "'");
         if (!std::isfinite(v)) s.fail_at(tok[i].pos, "coordinate is not finite");
+        if (k == "v" && i <= 3) out->coords.push_back(v);
       }
       if (k == "v") {
         if (out->num_vertices >= kMaxCount) s.fail_at(tok[0].pos, "too many vertices");
@@ -238,11 +267,14 @@ void scan_off(const Scanner& s, std::string_view data, SurfaceScan* out) {
     i32("edge count");
     if (nv < 0 || nf < 0) s.fail_byte(p, "negative vertex or face count");
     bin.check_count_binary(static_cast<std::uint64_t>(nv), 12, "vertex");
+    out->coords.reserve(3 * static_cast<std::size_t>(nv));
     for (std::int32_t v = 0; v < nv; ++v)
       for (int k = 0; k < 3; ++k) {
         const std::size_t at = bin.pos();
-        if (!std::isfinite(bin.binary<float>(false, "coordinate")))
+        const float x = bin.binary<float>(false, "coordinate");
+        if (!std::isfinite(x))
           s.fail_byte(at, "coordinate of vertex " + std::to_string(v) + " is not finite");
+        out->coords.push_back(x);
       }
     out->num_vertices = nv;
     bin.check_count_binary(static_cast<std::uint64_t>(nf), 16, "face");
@@ -284,6 +316,7 @@ void scan_off(const Scanner& s, std::string_view data, SurfaceScan* out) {
     c.check_count(static_cast<std::uint64_t>(nc[1]), 6, "face");
   }
   const std::size_t need = 3 + (normals ? 3 : 0) + (st ? 2 : 0);
+  out->coords.reserve(3 * static_cast<std::size_t>(nc[0]));
   for (std::int64_t v = 0; v < nc[0]; ++v) {
     do {
       if (!lines.next(&b, &e))
@@ -295,11 +328,12 @@ void scan_off(const Scanner& s, std::string_view data, SurfaceScan* out) {
     if (tok.size() < need || tok.size() > need + (colors ? 4 : 0))
       s.fail_at(tok[0].pos, "vertex line has " + std::to_string(tok.size()) + " values, expected " +
                                 std::to_string(need) + (colors ? " plus a colour" : ""));
-    for (const Token& t : tok) {
+    for (std::size_t i = 0; i < tok.size(); ++i) {
       double x;
-      if (!parse_double(t.text, &x))
-        s.fail_at(t.pos, "expected a number, got '" + printable(t.text) + "'");
-      if (!std::isfinite(x)) s.fail_at(t.pos, "coordinate is not finite");
+      if (!parse_double(tok[i].text, &x))
+        s.fail_at(tok[i].pos, "expected a number, got '" + printable(tok[i].text) + "'");
+      if (!std::isfinite(x)) s.fail_at(tok[i].pos, "coordinate is not finite");
+      if (i < 3) out->coords.push_back(x);
     }
   }
   out->num_vertices = nc[0];
@@ -488,32 +522,38 @@ void scan_ply(const Scanner& s, std::string_view data, SurfaceScan* out) {
   if (format.empty()) s.fail_at(0, "PLY header has no 'format' line");
   const std::size_t data_start = lines.pos();
 
+  const bool ascii = format == "ascii";
+  // No element's count may exceed what the data can hold: checked for each on its own first (a
+  // huge count is the problem to report, before any property is judged), then cumulatively while
+  // reading, before anything is allocated.
+  auto check_count = [ascii](const PlyElement& el, const Scanner& at) {
+    std::size_t min_bytes = 0;  // a record's smallest size: "0 " per value, or empty lists
+    for (const PlyProperty& p : el.props)
+      min_bytes += ascii ? 2 : ply_size(p.list ? p.count_type : p.type);
+    if (ascii)
+      at.check_count(static_cast<std::uint64_t>(el.count), std::max<std::size_t>(min_bytes, 1),
+                     "element");
+    else
+      at.check_count_binary(static_cast<std::uint64_t>(el.count), min_bytes, "element");
+  };
   {
-    // Counts first, before anything else is judged: each must fit in the data on its own.
-    Scanner c(s.path(), data);
-    c.set_pos(data_start);
-    for (const PlyElement& el : elements) {
-      std::size_t min_bytes = 0;
-      for (const PlyProperty& p : el.props)
-        min_bytes += format == "ascii" ? 2 : ply_size(p.list ? p.count_type : p.type);
-      c.set_pos(data_start);
-      if (format == "ascii")
-        c.check_count(static_cast<std::uint64_t>(el.count), std::max<std::size_t>(min_bytes, 1),
-                      "element");
-      else
-        c.check_count_binary(static_cast<std::uint64_t>(el.count), min_bytes, "element");
-    }
+    Scanner start(s.path(), data);
+    start.set_pos(data_start);
+    for (const PlyElement& el : elements) check_count(el, start);
   }
   // Which properties tmop (and OpenMesh) use: vertex x y z, face vertex_indices.
   const PlyElement* vertex = nullptr;
   for (const PlyElement& el : elements)
     if (el.name == "vertex") vertex = &el;
   if (!vertex) s.fail_at(0, "PLY header has no 'element vertex'");
-  for (const char* axis : {"x", "y", "z"}) {
-    bool found = false;
-    for (const PlyProperty& p : vertex->props) found |= !p.list && p.name == axis;
-    if (!found)
-      s.fail_at(vertex->header_pos, std::string("element vertex has no property ") + axis);
+  int axis_of[3] = {-1, -1, -1};  // property index of x, y, z
+  for (int k = 0; k < 3; ++k) {
+    const char* axis[3] = {"x", "y", "z"};
+    for (std::size_t i = 0; i < vertex->props.size(); ++i)
+      if (!vertex->props[i].list && vertex->props[i].name == axis[k])
+        axis_of[k] = static_cast<int>(i);
+    if (axis_of[k] < 0)
+      s.fail_at(vertex->header_pos, std::string("element vertex has no property ") + axis[k]);
   }
   out->num_vertices = vertex->count;
   const std::int64_t nv = vertex->count;
@@ -529,7 +569,6 @@ void scan_ply(const Scanner& s, std::string_view data, SurfaceScan* out) {
       s.fail_at(el.header_pos, "face vertex indices must be integers");
   }
 
-  const bool ascii = format == "ascii";
   out->binary = !ascii;
   const bool swap = format == "binary_big_endian";
   FaceCollector faces(s, out);
@@ -537,16 +576,10 @@ void scan_ply(const Scanner& s, std::string_view data, SurfaceScan* out) {
   Scanner r(s.path(), data);
   r.set_pos(data_start);
   for (const PlyElement& el : elements) {
-    // No allocation from a count the file cannot hold.
-    std::size_t min_bytes = 0;
-    for (const PlyProperty& p : el.props)
-      min_bytes += ascii ? 2 : ply_size(p.list ? p.count_type : p.type);
-    if (ascii)
-      r.check_count(static_cast<std::uint64_t>(el.count), std::max<std::size_t>(min_bytes, 1),
-                    "element");
-    else
-      r.check_count_binary(static_cast<std::uint64_t>(el.count), min_bytes, "element");
+    check_count(el, r);
     const bool is_face = el.name == "face";
+    const bool is_vertex = &el == vertex;
+    if (is_vertex) out->coords.assign(3 * static_cast<std::size_t>(el.count), 0.0);
     for (std::int64_t rec = 0; rec < el.count; ++rec) {
       if (ascii) r.skip_space();
       const std::size_t rec_pos = r.pos();
@@ -587,6 +620,10 @@ void scan_ply(const Scanner& s, std::string_view data, SurfaceScan* out) {
             v = ply_load(p.type, r.bytes(ply_size(p.type), what), swap);
             if (!std::isfinite(v)) s.fail_byte(at, std::string(what) + " is not finite");
           }
+          if (is_vertex)
+            for (int k = 0; k < 3; ++k)
+              if (static_cast<int>(pi) == axis_of[k])
+                out->coords[3 * static_cast<std::size_t>(rec) + static_cast<std::size_t>(k)] = v;
           if (indices) {
             if (v < 0 || v >= static_cast<double>(nv)) {
               const std::string what = "vertex index " + std::to_string(static_cast<long long>(v)) +
@@ -610,17 +647,26 @@ void scan_ply(const Scanner& s, std::string_view data, SurfaceScan* out) {
 
 }  // namespace
 
-SurfaceScan scan_surface(const std::string& path, const std::string& ext, const std::string& data) {
+void read_surface(const std::string& path, const std::string& ext, const std::string& data,
+                  Mesh* mesh) {
   Scanner s(path, data);
   if (s.at_end()) s.fail_at(0, "empty file");
-  SurfaceScan out;
+  SurfaceScan scan;
   if (ext == "obj")
-    scan_obj(s, data, &out);
+    scan_obj(s, data, &scan);
   else if (ext == "off")
-    scan_off(s, data, &out);
+    scan_off(s, data, &scan);
   else
-    scan_ply(s, data, &out);
-  return out;
+    scan_ply(s, data, &scan);
+  mesh->space_dim = 3;
+  mesh->coords = std::move(scan.coords);
+  const std::size_t nf = scan.face_pos.size();
+  mesh->cell_types.reserve(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const int n = scan.face_offsets[f + 1] - scan.face_offsets[f];
+    mesh->add_cell(n == 3 ? CellType::kTri3 : CellType::kQuad4,
+                   scan.face_nodes.data() + scan.face_offsets[f]);
+  }
 }
 
 }  // namespace io
