@@ -12,16 +12,11 @@
 // VectorT<double> copies when its templates are instantiated here; the warning is about
 // OpenMesh's code, not ours.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <stdlib.h>
-#include <unistd.h>
-
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
+#include <string>
+#include <vector>
 
 #include "tmop/io/formats.h"
 

@@ -32,7 +32,7 @@ namespace io {
 namespace {
 
 // What a reader collects: coordinates and faces with the byte offset of each face's record.
-struct SurfaceScan {
+struct Surface {
   std::int64_t num_vertices = 0;
   std::vector<double> coords;                 // 3 per vertex
   std::vector<std::int32_t> face_offsets{0};  // face f has nodes [offsets[f], offsets[f + 1])
@@ -101,15 +101,16 @@ class Lines {
 
 class FaceCollector {
  public:
-  FaceCollector(const Scanner& s, SurfaceScan* out) : s_(s), out_(out) {}
-  // tmop has triangles and quadrilaterals only; OpenMesh would read larger polygons.
+  FaceCollector(const Scanner& s, Surface* out) : s_(s), out_(out) {}
+  // tmop has triangles and quadrilaterals only.
   void check_size(std::int64_t n, std::size_t pos) const {
     if (n < 3) fail(pos, "face has " + std::to_string(n) + " vertices, at least 3 are needed");
     if (n > 4)
       fail(pos, "face has " + std::to_string(n) +
                     " vertices; tmop reads triangles and quadrilaterals only");
   }
-  // Checks that no vertex repeats (OpenMesh drops such faces), then adds the face.
+  // Checks that no corner repeats (a degenerate face; OpenMesh dropped such faces silently), then
+  // adds the face.
   void add(const std::int32_t* nodes, int n, std::size_t pos) {
     check_size(n, pos);
     for (int i = 0; i < n; ++i)
@@ -128,7 +129,7 @@ class FaceCollector {
 
  private:
   const Scanner& s_;
-  SurfaceScan* out_;
+  Surface* out_;
   int index_base_ = 0;  // how indices are numbered in messages: 1 in OBJ, 0 in OFF / PLY
 };
 
@@ -136,8 +137,8 @@ class FaceCollector {
 // OBJ: line-based statements.
 
 bool is_skipped_obj_statement(std::string_view k) {
-  // Grouping, display, material and free-form statements: OpenMesh ignores them and so does
-  // tmop (points and lines too: tmop reads faces only from surface formats).
+  // Grouping, display, material and free-form statements are skipped, as OpenMesh skipped them,
+  // and so are points and lines: tmop reads faces only from surface formats.
   static const char* const kSkipped[] = {
       "o",     "g",        "s",        "mg",         "usemtl",    "mtllib", "lod",
       "bevel", "c_interp", "d_interp", "shadow_obj", "trace_obj", "maplib", "usemap",
@@ -149,7 +150,7 @@ bool is_skipped_obj_statement(std::string_view k) {
   return false;
 }
 
-void scan_obj(const Scanner& s, std::string_view data, SurfaceScan* out) {
+void read_obj(const Scanner& s, std::string_view data, Surface* out) {
   FaceCollector faces(s, out);
   faces.set_index_base(1);
   std::int64_t nvt = 0, nvn = 0;
@@ -228,7 +229,7 @@ void scan_obj(const Scanner& s, std::string_view data, SurfaceScan* out) {
 // ---------------------------------------------------------------------------------------------
 // OFF: header keyword, counts, one vertex per line, one face per line.
 
-void scan_off(const Scanner& s, std::string_view data, SurfaceScan* out) {
+void read_off(const Scanner& s, std::string_view data, Surface* out) {
   Lines lines(data);
   std::vector<Token> tok;
   std::size_t b, e;
@@ -472,7 +473,7 @@ double ply_load(PlyType t, const char* p, bool swap) {
   return 0;
 }
 
-void scan_ply(const Scanner& s, std::string_view data, SurfaceScan* out) {
+void read_ply(const Scanner& s, std::string_view data, Surface* out) {
   Lines lines(data);
   std::vector<Token> tok;
   std::size_t b, e;
@@ -541,7 +542,7 @@ void scan_ply(const Scanner& s, std::string_view data, SurfaceScan* out) {
     start.set_pos(data_start);
     for (const PlyElement& el : elements) check_count(el, start);
   }
-  // Which properties tmop (and OpenMesh) use: vertex x y z, face vertex_indices.
+  // The properties tmop uses: vertex x y z, face vertex_indices.
   const PlyElement* vertex = nullptr;
   for (const PlyElement& el : elements)
     if (el.name == "vertex") vertex = &el;
@@ -651,21 +652,21 @@ void read_surface(const std::string& path, const std::string& ext, const std::st
                   Mesh* mesh) {
   Scanner s(path, data);
   if (s.at_end()) s.fail_at(0, "empty file");
-  SurfaceScan scan;
+  Surface surface;
   if (ext == "obj")
-    scan_obj(s, data, &scan);
+    read_obj(s, data, &surface);
   else if (ext == "off")
-    scan_off(s, data, &scan);
+    read_off(s, data, &surface);
   else
-    scan_ply(s, data, &scan);
+    read_ply(s, data, &surface);
   mesh->space_dim = 3;
-  mesh->coords = std::move(scan.coords);
-  const std::size_t nf = scan.face_pos.size();
+  mesh->coords = std::move(surface.coords);
+  const std::size_t nf = surface.face_pos.size();
   mesh->cell_types.reserve(nf);
   for (std::size_t f = 0; f < nf; ++f) {
-    const int n = scan.face_offsets[f + 1] - scan.face_offsets[f];
+    const int n = surface.face_offsets[f + 1] - surface.face_offsets[f];
     mesh->add_cell(n == 3 ? CellType::kTri3 : CellType::kQuad4,
-                   scan.face_nodes.data() + scan.face_offsets[f]);
+                   surface.face_nodes.data() + surface.face_offsets[f]);
   }
 }
 
