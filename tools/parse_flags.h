@@ -27,7 +27,8 @@ inline void parse_flags(int* argc, char*** argv) {
     if (name.compare(0, 2, "no") == 0 &&
         gflags::GetCommandLineFlagInfo(name.substr(2).c_str(), &info) && info.type == "bool")
       continue;
-    std::fprintf(stderr, "%s: unknown flag %s (see --help)\n", (*argv)[0], a);
+    const char* slash = std::strrchr((*argv)[0], '/');  // the program's name, as other errors
+    std::fprintf(stderr, "%s: unknown flag %s (see --help)\n", slash ? slash + 1 : (*argv)[0], a);
     std::exit(2);
   }
   gflags::ParseCommandLineFlags(argc, argv, true);

@@ -63,6 +63,7 @@
 #include "tmop/recipes/untangle.h"
 #include "tmop/target/target.h"
 #include "tools/parse_flags.h"
+#include "tools/print_error.h"
 
 DEFINE_string(input, "", "Input mesh (any format read_mesh reads).");
 DEFINE_string(task, "shape", "read, quality, shape, untangle, evaluate, floor or perturb.");
@@ -94,7 +95,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 int fail(int code, const std::string& message) {
-  std::fprintf(stderr, "tmop_bench: %s\n", message.c_str());
+  tmop_tools::print_error("tmop_bench", message,
+                          {FLAGS_input, FLAGS_output, FLAGS_reference, FLAGS_json});
   return code;
 }
 

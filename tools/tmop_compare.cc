@@ -38,6 +38,7 @@
 #include "tmop/quality/quality_report.h"
 #include "tmop/quality/quality_svg.h"
 #include "tools/parse_flags.h"
+#include "tools/print_error.h"
 
 DEFINE_string(a, "", "First mesh (or the first positional argument).");
 DEFINE_string(b, "", "Second mesh, same vertices and cells as A (or the second positional one).");
@@ -56,7 +57,7 @@ namespace {
 constexpr int kUsageError = 2;
 
 int fail(const std::string& message) {
-  std::fprintf(stderr, "tmop_compare: %s\n", message.c_str());
+  tmop_tools::print_error("tmop_compare", message, {FLAGS_a, FLAGS_b, FLAGS_reference, FLAGS_svg});
   return kUsageError;
 }
 

@@ -34,6 +34,7 @@
 #include "tmop/recipes/sliver.h"
 #include "tmop/recipes/untangle.h"
 #include "tools/parse_flags.h"
+#include "tools/print_error.h"
 
 DEFINE_string(input, "", "Input mesh (.msh .vtk .vtu .mesh .obj .off .ply .stl).");
 DEFINE_string(output, "", "Output mesh; format by extension. Written only on success.");
@@ -119,7 +120,9 @@ DEFINE_bool(verbose, false, "Print a progress line per solver iteration.");
 namespace {
 
 int fail(int code, const std::string& message) {
-  std::fprintf(stderr, "tmop_optimize: %s\n", message.c_str());
+  tmop_tools::print_error(
+      "tmop_optimize", message,
+      {FLAGS_input, FLAGS_output, FLAGS_reference, FLAGS_moved, FLAGS_report, FLAGS_geometry});
   return code;
 }
 
@@ -276,6 +279,12 @@ int main(int argc, char** argv) {
   if (!s.ok()) return fail(2, s.message());
   s = validate_mesh(mesh);
   if (!s.ok()) return fail(2, FLAGS_input + ": " + s.message());
+  // The output's format must hold this mesh: refuse now rather than after the optimization.
+  // Node movement changes neither cell types nor connectivity, which is all the check needs.
+  WriteOptions wopt;
+  wopt.binary = FLAGS_binary;
+  s = check_writable(FLAGS_output, mesh, wopt);
+  if (!s.ok()) return fail(2, s.message());
   if (!FLAGS_metric.empty() && !make_metric(FLAGS_metric, mesh.dim())) {
     std::string known;
     for (const std::string& n : metric_names(mesh.dim())) known += (known.empty() ? "" : ", ") + n;
@@ -429,8 +438,6 @@ int main(int argc, char** argv) {
                 result.certified, result.certified + result.uncertified);
 
   if (flipped) reorient(&mesh);
-  WriteOptions wopt;
-  wopt.binary = FLAGS_binary;
   s = write_mesh(FLAGS_output, mesh, wopt);
   if (!s.ok()) return fail(2, s.message());
   std::printf("wrote %s\n", FLAGS_output.c_str());

@@ -18,6 +18,7 @@
 #include "tmop/quality/quality_summary.h"
 #include "tmop/quality/quality_svg.h"
 #include "tools/parse_flags.h"
+#include "tools/print_error.h"
 
 DEFINE_string(input, "",
               "Mesh to measure (required). Format by extension: .msh (Gmsh 2.2/4.1), .vtk, .vtu, "
@@ -52,7 +53,7 @@ constexpr int kUsageError = 2;
 constexpr int kOutputError = 1;
 
 int fail(int code, const std::string& message) {
-  std::fprintf(stderr, "tmop_quality: %s\n", message.c_str());
+  tmop_tools::print_error("tmop_quality", message, {FLAGS_input, FLAGS_output, FLAGS_svg});
   return code;
 }
 
@@ -127,10 +128,7 @@ int main(int argc, char** argv) {
 
   tmop::Mesh mesh;
   const tmop::Status status = tmop::read_mesh(FLAGS_input, &mesh);
-  if (!status.ok()) {
-    std::fprintf(stderr, "%s\n", status.message().c_str());
-    return kUsageError;
-  }
+  if (!status.ok()) return fail(kUsageError, status.message());
   const tmop::QualityReport report = tmop::compute_quality(mesh, options);
   const std::string text = FLAGS_json ? tmop::quality_json(report) : tmop::quality_summary(report);
   std::fwrite(text.data(), 1, text.size(), stdout);
@@ -138,7 +136,7 @@ int main(int argc, char** argv) {
   if (!FLAGS_svg.empty()) {
     std::ofstream out(FLAGS_svg, std::ios::binary);
     out << tmop::quality_svg(mesh, report);
-    if (!out.flush()) return fail(kOutputError, "cannot write " + FLAGS_svg);
+    if (!out.flush()) return fail(kOutputError, FLAGS_svg + ": cannot write");
   }
   if (!FLAGS_output.empty()) {
     tmop::add_quality_fields(report, &mesh);

@@ -79,6 +79,36 @@ TEST(BadInput, MessagesNameTheProblemAndItsPlace) {
       {"huge_point_count.vtk", "huge_point_count.vtk:5: declared value count 2999999997"},
       {"wrong_byte_count.vtu", "declares 1000 bytes"},
       {"truncated_binary22.msh", "truncated_binary22.msh:byte "},
+      // Surface formats: OpenMesh accepted these silently (garbage skipped, faces dropped, NaN
+      // read as a coordinate, empty meshes).
+      {"garbage_line.obj", "garbage_line.obj:4: unknown OBJ statement 'this'"},
+      {"index_out_of_range.obj", "index_out_of_range.obj:5: vertex index 9 out of range"},
+      {"nan_coordinate.obj", "nan_coordinate.obj:4: coordinate is not finite"},
+      {"short_face.obj", "short_face.obj:5: face has 2 vertices"},
+      {"repeated_vertex.obj", "repeated_vertex.obj:4: face uses vertex 2 twice"},
+      {"inf_coordinate.off", "inf_coordinate.off:4: coordinate is not finite"},
+      {"index_out_of_range.off", "index_out_of_range.off:6: vertex index 3 out of range 0..2"},
+      {"truncated.off", "truncated.off:8: unexpected end of file after 1 of 2 faces"},
+      {"data_after_faces.off", "data_after_faces.off:7: unexpected data after the last face"},
+      {"pentagon.off", "pentagon.off:8: face has 5 vertices"},
+      {"index_out_of_range_binary.off", "index_out_of_range_binary.off:byte 71: vertex index 5"},
+      {"nan_coordinate.ply", "nan_coordinate.ply:11: coordinate is not finite"},
+      {"index_out_of_range.ply", "index_out_of_range.ply:13: vertex index 7 out of range 0..2"},
+      {"truncated.ply", "truncated.ply:14: unexpected end of file"},
+      {"nan_binary.ply", "nan_binary.ply:byte 185: coordinate is not finite"},
+      {"index_out_of_range_binary.ply", "index_out_of_range_binary.ply:byte 214: vertex index 3"},
+      {"truncated_binary.ply", "truncated_binary.ply:byte 205: list length 3 runs past the end"},
+      {"nan_coordinate.stl", "nan_coordinate.stl:6: coordinate is not finite"},
+      {"two_vertex_facet.stl", "two_vertex_facet.stl:2: facet has 2 vertices, expected 3"},
+      {"degenerate_facet.stl", "degenerate_facet.stl:2: facet has two equal corners"},
+      {"truncated.stl", "truncated.stl:12: unexpected end of file, expected 'endloop'"},
+      {"empty_facets.stl", "empty_facets.stl:3: expected 'facet' or 'endsolid', got 'endloop'"},
+      {"nan_binary.stl", "nan_binary.stl:byte 174: coordinate of triangle 1 is not finite"},
+      {"no_triangles_binary.stl", "no_triangles_binary.stl:byte 80: no triangles"},
+      // Said "offsets give 3 nodes, expected 3".
+      {"short_connectivity.vtu",
+       "short_connectivity.vtu:11: cell 1 (tri3) ends at offset 6, but the connectivity array has "
+       "only 5 values"},
   };
   for (const Expect& e : expects) {
     Mesh mesh;
@@ -136,6 +166,49 @@ TEST(BadInput, EveryTruncationOfValidFilesIsHandled) {
   }
 }
 
+// The surface formats: OFF, PLY and STL declare what follows (or close it with endsolid), so
+// nearly every prefix must be rejected; an OBJ cut at a line end is a shorter valid file. Every
+// message is located, on one line.
+TEST(BadInput, EveryTruncationOfSurfaceFilesIsHandled) {
+  const std::string dir = test::temp_dir();
+  struct Case {
+    const char* name;
+    bool binary;
+    int min_failures_percent;
+  };
+  for (const Case& c : {Case{"a.off", false, 90}, Case{"b.off", true, 99}, Case{"c.ply", false, 90},
+                        Case{"d.ply", true, 99}, Case{"e.stl", false, 99}, Case{"f.stl", true, 99},
+                        Case{"g.obj", false, 0}}) {
+    WriteOptions o;
+    o.binary = c.binary;
+    const std::string full = dir + "/" + c.name;
+    const bool stl = std::string(c.name).find(".stl") != std::string::npos;
+    const Mesh src =
+        test::make_mesh(stl ? std::vector<CellType>{CellType::kTri3, CellType::kTri3}
+                            : std::vector<CellType>{CellType::kTri3, CellType::kQuad4});
+    ASSERT_TRUE(write_mesh(full, src, o).ok()) << c.name;
+    std::FILE* f = std::fopen(full.c_str(), "rb");
+    std::string bytes(1 << 16, '\0');
+    bytes.resize(std::fread(&bytes[0], 1, bytes.size(), f));
+    std::fclose(f);
+    const std::string cut = dir + "/cut_" + c.name;
+    int failures = 0, tries = 0;
+    for (std::size_t n = 0; n < bytes.size(); n += 3, ++tries) {
+      f = std::fopen(cut.c_str(), "wb");
+      std::fwrite(bytes.data(), 1, n, f);
+      std::fclose(f);
+      Mesh out;
+      const Status s = read_mesh(cut, &out);
+      if (!s.ok()) {
+        ++failures;
+        EXPECT_EQ(s.message().compare(0, cut.size() + 1, cut + ":"), 0) << s.message();
+        EXPECT_EQ(s.message().find('\n'), std::string::npos) << s.message();
+      }
+    }
+    EXPECT_GE(failures * 100, tries * c.min_failures_percent) << c.name;
+  }
+}
+
 // Random byte corruptions of valid files: never a crash, and failures are located messages.
 TEST(BadInput, RandomByteCorruptionsAreHandled) {
   const std::string dir = test::temp_dir();
@@ -153,14 +226,18 @@ TEST(BadInput, RandomByteCorruptionsAreHandled) {
   for (const Case& c : {Case{"a.msh", false, 22}, Case{"b.msh", true, 22}, Case{"c.msh", true, 41},
                         Case{"d.msh", false, 41}, Case{"e.vtk", true, 0}, Case{"f.vtk", false, 0},
                         Case{"g.vtu", true, 0}, Case{"h.vtu", false, 0}, Case{"i.mesh", false, 0},
-                        Case{"j.off", false, 0}}) {
+                        Case{"j.off", false, 0}, Case{"k.off", true, 0}, Case{"l.obj", false, 0},
+                        Case{"m.ply", false, 0}, Case{"n.ply", true, 0}, Case{"o.stl", false, 0},
+                        Case{"p.stl", true, 0}}) {
     WriteOptions o;
     o.binary = c.binary;
     if (c.version) o.msh_version = c.version;
     const std::string full = dir + "/" + c.name;
-    const Mesh& src = std::string(c.name).find(".off") != std::string::npos
-                          ? test::make_mesh({CellType::kTri3, CellType::kQuad4})
-                          : m;
+    const std::string ext = std::string(c.name).substr(2);
+    const Mesh src = ext == "stl" ? test::make_mesh({CellType::kTri3, CellType::kTri3})
+                     : ext == "off" || ext == "obj" || ext == "ply"
+                         ? test::make_mesh({CellType::kTri3, CellType::kQuad4})
+                         : m;
     ASSERT_TRUE(write_mesh(full, src, o).ok());
     std::FILE* f = std::fopen(full.c_str(), "rb");
     std::string bytes(1 << 16, '\0');

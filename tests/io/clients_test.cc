@@ -3,8 +3,10 @@
 // Each test skips only when the program / Python module is absent.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "io_test_util.h"
 #include "tmop/io/mesh_io.h"
@@ -292,6 +294,143 @@ TEST(TmopWrites, MeshioReadsSurfaceFormats) {
     dumps.push_back(test::dump_of(mesh));
   }
   compare_with_reader("meshio", files, dumps);
+}
+
+// A planar 2D mesh (space_dim 2) whose vertices are all used (Gmsh keeps only used nodes):
+// a strip of triangles and quadrilaterals with boundary edges, or their quadratic versions.
+Mesh planar_mesh(bool quadratic) {
+  Mesh m;
+  m.space_dim = 2;
+  const int nx = 5, ny = 3;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const double x[2] = {0.3 * i + 0.01 * j, 0.7 * j};
+      m.add_vertex(x);
+    }
+  auto mid = [&](std::int32_t a, std::int32_t b) {
+    const double x[2] = {0.5 * (m.vertex(a)[0] + m.vertex(b)[0]),
+                         0.5 * (m.vertex(a)[1] + m.vertex(b)[1])};
+    return m.add_vertex(x);
+  };
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      const std::int32_t a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
+      if ((i + j) % 2 == 0 && !quadratic) {
+        const std::int32_t q[4] = {a, b, c, d};
+        m.add_cell(CellType::kQuad4, q, 5);
+      } else if (!quadratic) {
+        const std::int32_t t1[3] = {a, b, c}, t2[3] = {a, c, d};
+        m.add_cell(CellType::kTri3, t1, 6);
+        m.add_cell(CellType::kTri3, t2, 6);
+      } else {
+        const std::int32_t t1[6] = {a, b, c, mid(a, b), mid(b, c), mid(c, a)};
+        const std::int32_t t2[6] = {a, c, d, mid(a, c), mid(c, d), mid(d, a)};
+        m.add_cell(CellType::kTri6, t1, 6);
+        m.add_cell(CellType::kTri6, t2, 6);
+      }
+    }
+  for (std::int32_t i = 0; i + 1 < nx; ++i) {
+    if (quadratic) {
+      const std::int32_t e[3] = {i, i + 1, mid(i, i + 1)};
+      m.add_cell(CellType::kLine3, e, 7);
+    } else {
+      const std::int32_t e[2] = {i, i + 1};
+      m.add_cell(CellType::kLine2, e, 7);
+    }
+  }
+  return m;
+}
+
+// Gmsh 4.8 could not open tmop's 2D Medit files ("Wrong node index 0"): it takes the line after
+// "Dimension" as the value, so the one-line "Dimension 2" hid the Vertices keyword. meshio 5
+// reads linear Medit cells only (no EdgesP2 / TrianglesP2), Gmsh both.
+TEST(TmopWrites, GmshAndMeshioReadTwoDimensionalMedit) {
+  SKIP_UNLESS(test::have_python_module("gmsh") || test::have_python_module("meshio"),
+              "python3-gmsh and python3-meshio");
+  const std::string dir = test::temp_dir();
+  const Mesh linear = planar_mesh(false), quadratic = planar_mesh(true);
+  const std::string lin = dir + "/planar.mesh", quad = dir + "/planar_p2.mesh";
+  ASSERT_TRUE(write_mesh(lin, linear).ok());
+  ASSERT_TRUE(write_mesh(quad, quadratic).ok());
+  Dump dl = test::dump_of(linear), dq = test::dump_of(quadratic);
+  if (test::have_python_module("meshio")) compare_with_reader("meshio", {lin}, {dl});
+  if (test::have_python_module("gmsh")) {
+    // Gmsh keeps Medit references as elementary tags, not physical groups.
+    test::strip_regions(&dl);
+    test::strip_regions(&dq);
+    compare_with_reader("gmsh", {lin, quad}, {dl, dq});
+  }
+}
+
+// Each triangle as its three corner coordinates, starting at the smallest corner (orientation
+// kept), so that readers that number STL vertices differently compare equal.
+std::vector<std::string> triangles_by_coordinates(const std::vector<double>& xyz,
+                                                  const std::vector<std::string>& cells) {
+  std::vector<std::string> out;
+  for (const std::string& c : cells) {
+    std::istringstream in(c);
+    std::string type;
+    int region, n[3];
+    in >> type >> region >> n[0] >> n[1] >> n[2];
+    if (type != "tri3") continue;
+    std::string corner[3];
+    for (int k = 0; k < 3; ++k) {
+      std::ostringstream p;
+      p.precision(17);
+      for (int j = 0; j < 3; ++j) p << xyz[3 * n[k] + j] << " ";
+      corner[k] = p.str();
+    }
+    const int first = static_cast<int>(std::min_element(corner, corner + 3) - corner);
+    out.push_back(corner[first] + "| " + corner[(first + 1) % 3] + "| " + corner[(first + 2) % 3]);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// OpenMesh's ASCII STL (a blank line before every "endloop") made meshio reject the file and Gmsh
+// 4.8 read 205 of 380 triangles. Both must read every triangle of tmop's ASCII and binary STL.
+TEST(TmopWrites, GmshAndMeshioReadEveryStlTriangle) {
+  SKIP_UNLESS(test::have_python_module("gmsh") || test::have_python_module("meshio"),
+              "python3-gmsh and python3-meshio");
+  const std::string dir = test::temp_dir();
+  Mesh m;
+  for (int j = 0; j < 11; ++j)
+    for (int i = 0; i < 20; ++i) {
+      // float32-exact, so that binary STL holds the same values.
+      const double x[3] = {0.25 * i + 0.0625, 0.125 * j, 0.03125 * ((i * j) % 5)};
+      m.add_vertex(x);
+    }
+  for (int j = 0; j < 10; ++j)
+    for (int i = 0; i < 19; ++i) {
+      const std::int32_t a = j * 20 + i, t1[3] = {a, a + 1, a + 21}, t2[3] = {a, a + 21, a + 20};
+      m.add_cell(CellType::kTri3, t1);
+      m.add_cell(CellType::kTri3, t2);
+    }
+  ASSERT_EQ(m.num_cells(), 380);
+  const Dump mine = test::dump_of(m);
+  const std::vector<std::string> want = triangles_by_coordinates(mine.xyz, mine.cells);
+  std::vector<std::string> files;
+  for (bool binary : {false, true}) {
+    WriteOptions o;
+    o.binary = binary;
+    files.push_back(dir + (binary ? "/b.stl" : "/a.stl"));
+    ASSERT_TRUE(write_mesh(files.back(), m, o).ok());
+  }
+  for (const char* reader : {"gmsh", "meshio"}) {
+    if (!test::have_python_module(reader)) continue;
+    std::string cmd = std::string(kPy) + " " + test::python_helper() + " " + reader;
+    for (const std::string& f : files) cmd += " '" + f + "'";
+    std::string out;
+    ASSERT_EQ(test::run(cmd, &out), 0) << cmd << "\n" << out;
+    for (const std::string& f : files) {
+      Dump d;
+      std::string err;
+      ASSERT_TRUE(test::parse_dump_file(f + "." + reader + ".dump", &d, &err)) << err;
+      const std::vector<std::string> got = triangles_by_coordinates(d.xyz, d.cells);
+      EXPECT_EQ(got.size(), 380u) << reader << " reading " << f;
+      EXPECT_TRUE(got == want) << reader << " reading " << f;
+    }
+  }
 }
 
 TEST(MeshioWrites, TmopReadsEveryFormat) {

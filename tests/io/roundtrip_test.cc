@@ -241,8 +241,8 @@ TEST(RoundTrip, OpenMeshRejectsVolumeCellsAndDropsBoundaryLines) {
   EXPECT_EQ(out.num_cells(), in.num_cells() - 1);
 }
 
-// Known limitation, pinned so that a change is noticed: OpenMesh 9 converts coordinates to
-// float32 on read and write, whatever the mesh's point type.
+// Known limitation, pinned so that a change is noticed: OpenMesh 9 writes coordinates as float32,
+// whatever the mesh's point type (tmop reads these files itself and keeps what the file says).
 TEST(RoundTrip, OpenMeshFormatsHoldFloat32Coordinates) {
   const std::string dir = test::temp_dir();
   Mesh in;

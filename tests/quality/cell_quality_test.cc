@@ -272,6 +272,36 @@ TEST(CellQuality, HexScaledJacobianIsMinOverCornersOfNormalisedEdges) {
   expect_rel(1 / std::sqrt(1 + s * s), q.scaled_jacobian);
 }
 
+// docs/quality.md: a corner's det / prod |e| is in [-1, 1] and is divided by the ideal element's
+// value there, so an inverted cell with a right corner reaches -1 / s_ideal: -2/sqrt3 for
+// triangles and prisms, -sqrt2 for tets and pyramids, -1 for quads and hexes.
+TEST(CellQuality, ScaledJacobianLowerBoundsAreReachedByMirroredRightCorners) {
+  struct Case {
+    CellType type;
+    std::vector<Vec3> x;
+    double lower;
+  };
+  const double s3 = 2 / std::sqrt(3.0), s2 = std::sqrt(2.0);
+  const Case cases[] = {
+      {CellType::kTri3, {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}}, -s3},
+      {CellType::kQuad4, {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}}, -1},
+      {CellType::kTet4, {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {0, 1, 0}}, -s2},
+      {CellType::kHex8,
+       {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, -1}, {1, 0, -1}, {1, 1, -1}, {0, 1, -1}},
+       -1},
+      {CellType::kWedge6,
+       {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, -1}, {1, 0, -1}, {0, 1, -1}},
+       -s3},
+      {CellType::kPyramid5, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, -1}}, -s2},
+  };
+  const double up[3] = {0, 0, 1};
+  for (const Case& c : cases) {
+    const CellQuality q = cell_quality(c.type, flat(c.x).data(), up);
+    EXPECT_TRUE(q.inverted) << cell_name(c.type);
+    EXPECT_NEAR(q.scaled_jacobian, c.lower, 1e-12) << cell_name(c.type);
+  }
+}
+
 TEST(CellQuality, InvertedTetIsDetectedEverywhere) {
   std::vector<Vec3> x = kRegularTet;
   std::swap(x[1], x[2]);

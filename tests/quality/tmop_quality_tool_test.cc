@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "tests/quality/test_meshes.h"
@@ -60,6 +61,31 @@ TEST_F(TmopQualityTool, BadInputAndUsageErrorsExitWithTwo) {
   EXPECT_EQ(exit_code(kTool + " --no_such_flag 2> /dev/null"), 2);
   EXPECT_EQ(exit_code(kTool + " --input=" + input_ + " --threads=x 2> /dev/null"), 2);
   EXPECT_EQ(exit_code(kTool + " --help > /dev/null"), 0);
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// Errors about a file are exactly "FILE:LINE: what" (or "FILE: what") on one line, without the
+// program name, as tmop_optimize prints them: the same line for the same bad file in every tool.
+TEST_F(TmopQualityTool, FileErrorsAreExactlyFileLineWhat) {
+  const std::string bad = dir_ + "garbage_line.obj", err = dir_ + "tool.err";
+  { std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nthis is not obj\nf 1 2 3\n"; }
+  EXPECT_EQ(exit_code(kTool + " --input=" + bad + " > /dev/null 2> " + err), 2);
+  EXPECT_EQ(slurp(err), bad + ":4: unknown OBJ statement 'this'\n");
+  // An output the format cannot hold: exit 1, the write_mesh message as it is, no file.
+  const std::string stl = dir_ + "tets.stl";
+  EXPECT_EQ(exit_code(kTool + " --input=" + input_ + " --output=" + stl + " > /dev/null 2> " + err),
+            1);
+  const std::string line = slurp(err);
+  EXPECT_EQ(line.rfind(stl + ": cannot write tet4 cells to .stl", 0), 0u) << line;
+  EXPECT_EQ(line.find('\n'), line.size() - 1) << line;
+  EXPECT_NE(exit_code("test -e " + stl), 0);
+  // Usage errors keep the program name.
+  EXPECT_EQ(exit_code(kTool + " 2> " + err), 2);
+  EXPECT_EQ(slurp(err), "tmop_quality: --input is required (see --help)\n");
 }
 
 TEST_F(TmopQualityTool, SummaryIsTheDefault) {

@@ -61,6 +61,39 @@ TEST_F(TmopOptimizeTool, UsageErrorsExitWithTwoAndOneLine) {
   EXPECT_EQ(run(io, &err), 0) << err;
 }
 
+// A bad input is reported exactly as read_mesh locates it, without the program name (tmop_quality
+// prints the same line for the same file).
+TEST_F(TmopOptimizeTool, InputErrorsAreExactlyFileLineWhat) {
+  const std::string bad = dir_ + "/bad.msh";
+  {
+    std::ofstream(bad) << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 nan 0\n$EndNodes\n";
+  }
+  std::string err;
+  EXPECT_EQ(run("--input=" + bad + " --output=" + dir_ + "/o.vtu", &err), 2);
+  EXPECT_EQ(err, bad + ":6: coordinate is not finite\n");
+  // Usage errors keep the program name.
+  EXPECT_EQ(run("--input=" + bad, &err), 2);
+  EXPECT_EQ(err, "tmop_optimize: --input and --output are required (see --help)\n");
+}
+
+// An output format that cannot hold the mesh is refused before anything is optimized (a quad
+// mesh to .stl used to end in an empty file and exit 0), and nothing is written.
+TEST_F(TmopOptimizeTool, OutputTheFormatCannotHoldIsRefusedBeforeOptimizing) {
+  const std::string in = dir_ + "/quads.msh", out = dir_ + "/o.stl";
+  ASSERT_TRUE(write_mesh(in, testing_grid::grid(CellType::kQuad4, 3)).ok());
+  std::string err;
+  EXPECT_EQ(run("--input=" + in + " --output=" + out, &err), 2);
+  EXPECT_EQ(lines(err), 1) << err;
+  EXPECT_EQ(err.rfind(out + ": cannot write quad4 cells to .stl", 0), 0u) << err;
+  std::ifstream stdout_file(dir_ + "/out.txt");
+  std::stringstream printed;
+  printed << stdout_file.rdbuf();
+  EXPECT_EQ(printed.str().find("before:"), std::string::npos) << printed.str();
+  EXPECT_NE(std::system(("test -e " + out).c_str()), 0);
+  EXPECT_EQ(run("--input=" + in + " --output=" + dir_ + "/no/such/dir/o.msh", &err), 2);
+  EXPECT_NE(err.find("does not exist"), std::string::npos) << err;
+}
+
 // An inverted triangle whose vertices are all on the (fixed) boundary cannot be repaired.
 TEST_F(TmopOptimizeTool, HonestFailureWritesTheInputOnlyWhenAsked) {
   Mesh m = testing_grid::grid(CellType::kTri3, 1);  // two triangles, every vertex on the boundary

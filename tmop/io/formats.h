@@ -2,7 +2,9 @@
 // The per-format readers and writers behind read_mesh / write_mesh (internal to io/).
 // Readers get the whole file in memory, throw tmop::Error with a located one-line message, and
 // fill a Mesh with space_dim = 3 (finish_read() then decides 2 or 3). Writers append the complete
-// file to *out (mesh_io.cc writes it atomically) or throw Error("cannot write ...").
+// file to *out (mesh_io.cc writes it atomically) or throw Error("cannot write ..."). The
+// check_*_writable functions throw the same errors as their writer for a mesh the format cannot
+// hold, without writing (check_writable in mesh_io.h).
 #ifndef TMOP_IO_FORMATS_H_
 #define TMOP_IO_FORMATS_H_
 
@@ -25,12 +27,19 @@ void write_vtu(const Mesh& mesh, const WriteOptions& options, std::string* out);
 
 void read_medit(const std::string& path, const std::string& data, Mesh* mesh);
 void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out);
+void check_medit_writable(const Mesh& mesh);
 
-// OpenMesh reads and writes files itself: these take paths (write goes to a temporary path whose
-// extension selects the format).
-void read_openmesh(const std::string& path, Mesh* mesh);
+void read_stl(const std::string& path, const std::string& data, Mesh* mesh);
+void write_stl(const Mesh& mesh, const WriteOptions& options, std::string* out);
+void check_stl_writable(const Mesh& mesh, const WriteOptions& options);
+
+// .obj .off .ply (ext without the dot, lower case): tmop reads them (surface_read.cc); OpenMesh
+// writes them to a path, a temporary one whose extension selects the format (openmesh_io.cc).
+void read_surface(const std::string& path, const std::string& ext, const std::string& data,
+                  Mesh* mesh);
 void write_openmesh(const std::string& path, const std::string& ext, const Mesh& mesh,
                     const WriteOptions& options);
+void check_openmesh_writable(const std::string& ext, const Mesh& mesh);
 
 // After a reader: sets space_dim to 2 when every z is exactly 0 and no cell is 3D (dropping the
 // z column), makes cell_region / cell_entity as long as the cell list.

@@ -166,24 +166,29 @@ void read_medit(const std::string& path, const std::string& data, Mesh* mesh) {
   MeditReader(path, data, mesh).read();
 }
 
-void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out) {
-  const int d = mesh.space_dim;
+void check_medit_writable(const Mesh& mesh) {
   for (int c = 0; c < mesh.num_cells(); ++c) {
     bool known = false;
     for (const Keyword& k : kKeywords) known |= k.type == mesh.cell_types[c];
     if (!known)
       throw Error(std::string("cannot write ") + cell_name(mesh.cell_types[c]) +
-                  " cells to Medit .mesh");
-    for (int i = 0; i < mesh.cell_size(c); ++i)
-      if (mesh.cell(c)[i] < 0 || mesh.cell(c)[i] >= mesh.num_vertices())
-        throw Error("cannot write: cell " + std::to_string(c) + " refers to a missing vertex");
+                  " cells to Medit .mesh (cell " + std::to_string(c) + " is the first)");
   }
+}
+
+void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out) {
+  const int d = mesh.space_dim;
+  check_medit_writable(mesh);
   const DataArray* refs = nullptr;
   for (const DataArray& a : mesh.point_data)
     if (a.name == "medit:ref" && a.components == 1 &&
         a.values.size() == static_cast<std::size_t>(mesh.num_vertices()))
       refs = &a;
-  out->append("MeshVersionFormatted 2\nDimension ");
+  // "Dimension" and its value on two lines, as Gmsh writes it: Gmsh 4.8's reader takes the line
+  // after "Dimension" as the value and recognises only "Dimension 3" on one line, so a one-line
+  // "Dimension 2" made it skip the Vertices keyword ("Wrong node index 0"). meshio and tmop
+  // read both forms.
+  out->append("MeshVersionFormatted 2\nDimension\n");
   append_int(out, d);
   out->append("\nVertices\n");
   append_int(out, mesh.num_vertices());

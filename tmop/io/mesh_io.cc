@@ -27,7 +27,7 @@ std::string extension(const std::string& path) {
 }
 
 bool is_openmesh_ext(const std::string& ext) {
-  return ext == "obj" || ext == "off" || ext == "ply" || ext == "stl";
+  return ext == "obj" || ext == "off" || ext == "ply";
 }
 
 const char* kKnown = "known: .msh .vtk .vtu .mesh .obj .off .ply .stl";
@@ -104,18 +104,17 @@ Status read_mesh(const std::string& path, Mesh* mesh) {
   mesh->clear();
   const std::string ext = extension(path);
   try {
-    if (is_openmesh_ext(ext)) {
-      io::read_openmesh(path, mesh);
-    } else {
-      if (ext != "msh" && ext != "vtk" && ext != "vtu" && ext != "mesh")
-        return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
-                               ")");
-      const std::string data = io::read_file(path);
-      if (ext == "msh") io::read_msh(path, data, mesh);
-      if (ext == "vtk") io::read_vtk(path, data, mesh);
-      if (ext == "vtu") io::read_vtu(path, data, mesh);
-      if (ext == "mesh") io::read_medit(path, data, mesh);
-    }
+    if (ext != "msh" && ext != "vtk" && ext != "vtu" && ext != "mesh" && ext != "stl" &&
+        !is_openmesh_ext(ext))
+      return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
+                             ")");
+    const std::string data = io::read_file(path);
+    if (ext == "msh") io::read_msh(path, data, mesh);
+    if (ext == "vtk") io::read_vtk(path, data, mesh);
+    if (ext == "vtu") io::read_vtu(path, data, mesh);
+    if (ext == "mesh") io::read_medit(path, data, mesh);
+    if (ext == "stl") io::read_stl(path, data, mesh);
+    if (is_openmesh_ext(ext)) io::read_surface(path, ext, data, mesh);
     io::finish_read(mesh);
   } catch (const Error& e) {
     mesh->clear();
@@ -127,32 +126,75 @@ Status read_mesh(const std::string& path, Mesh* mesh) {
   return Status::Ok();
 }
 
+namespace {
+
+// Throws Error("PATH: ...") for anything write_mesh would refuse before writing.
+void check_writable_or_throw(const std::string& path, const Mesh& mesh,
+                             const WriteOptions& options) {
+  const std::string ext = extension(path);
+  if (ext != "msh" && ext != "vtk" && ext != "vtu" && ext != "mesh" && ext != "stl" &&
+      !is_openmesh_ext(ext))
+    throw Error(path + ": unknown mesh file extension '." + ext + "' (" + kKnown + ")");
+  if (mesh.space_dim != 2 && mesh.space_dim != 3)
+    throw Error(path + ": cannot write a mesh with space_dim " + std::to_string(mesh.space_dim));
+  // Writers index these arrays per cell: refuse an inconsistent Mesh instead of reading past
+  // the end of one of them.
+  const std::size_t n = mesh.cell_types.size();
+  if (mesh.cell_region.size() != n || mesh.cell_entity.size() != n ||
+      mesh.cell_offsets.size() != n + 1 || mesh.coords.size() % mesh.space_dim != 0 ||
+      (n > 0 && static_cast<std::size_t>(mesh.cell_offsets[n]) != mesh.cell_nodes.size()))
+    throw Error(path +
+                ": cannot write an inconsistent Mesh (cell_region, cell_entity, "
+                "cell_offsets, cell_nodes and coords sizes disagree)");
+  for (std::size_t c = 0; c < n; ++c)
+    if (mesh.cell_offsets[c + 1] - mesh.cell_offsets[c] != cell_num_nodes(mesh.cell_types[c]))
+      throw Error(path + ": cannot write: cell " + std::to_string(c) + " has " +
+                  std::to_string(mesh.cell_offsets[c + 1] - mesh.cell_offsets[c]) +
+                  " nodes, its type " + cell_name(mesh.cell_types[c]) + " has " +
+                  std::to_string(cell_num_nodes(mesh.cell_types[c])));
+  for (std::int32_t v : mesh.cell_nodes)
+    if (v < 0 || v >= mesh.num_vertices())
+      throw Error(path + ": cannot write: a cell refers to vertex " + std::to_string(v) +
+                  ", the mesh has " + std::to_string(mesh.num_vertices()));
+  if (ext == "msh" && options.msh_version != 22 && options.msh_version != 41)
+    throw Error(path + ": cannot write MSH version " + std::to_string(options.msh_version) +
+                " (22 and 41 are supported)");
+  try {
+    if (ext == "mesh") io::check_medit_writable(mesh);
+    if (ext == "stl") io::check_stl_writable(mesh, options);
+    if (is_openmesh_ext(ext)) io::check_openmesh_writable(ext, mesh);
+  } catch (const Error& e) {
+    throw Error(path + ": " + e.what());
+  }
+  // The temporary file goes next to the output, so its directory must exist and be writable.
+  const std::size_t slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  struct stat st;
+  if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+    throw Error(path + ": cannot write: directory " + dir + " does not exist");
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw Error(path + ": cannot write: directory " + dir + " is not writable");
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw Error(path + ": cannot write: it is a directory");
+}
+
+}  // namespace
+
+Status check_writable(const std::string& path, const Mesh& mesh, const WriteOptions& options) {
+  try {
+    check_writable_or_throw(path, mesh, options);
+  } catch (const Error& e) {
+    return Status::Failure(e.what());
+  } catch (const std::bad_alloc&) {
+    return Status::Failure(path + ": out of memory while checking the output");
+  }
+  return Status::Ok();
+}
+
 Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions& options) {
   const std::string ext = extension(path);
   try {
-    if (mesh.space_dim != 2 && mesh.space_dim != 3)
-      return Status::Failure(path + ": cannot write a mesh with space_dim " +
-                             std::to_string(mesh.space_dim));
-    // Writers index these arrays per cell: refuse an inconsistent Mesh instead of reading past
-    // the end of one of them.
-    const std::size_t n = mesh.cell_types.size();
-    if (mesh.cell_region.size() != n || mesh.cell_entity.size() != n ||
-        mesh.cell_offsets.size() != n + 1 || mesh.coords.size() % mesh.space_dim != 0 ||
-        (n > 0 && static_cast<std::size_t>(mesh.cell_offsets[n]) != mesh.cell_nodes.size()))
-      return Status::Failure(path +
-                             ": cannot write an inconsistent Mesh (cell_region, cell_entity, "
-                             "cell_offsets, cell_nodes and coords sizes disagree)");
-    for (std::size_t c = 0; c < n; ++c)
-      if (mesh.cell_offsets[c + 1] - mesh.cell_offsets[c] != cell_num_nodes(mesh.cell_types[c]))
-        return Status::Failure(path + ": cannot write: cell " + std::to_string(c) + " has " +
-                               std::to_string(mesh.cell_offsets[c + 1] - mesh.cell_offsets[c]) +
-                               " nodes, its type " + cell_name(mesh.cell_types[c]) + " has " +
-                               std::to_string(cell_num_nodes(mesh.cell_types[c])));
-    for (std::int32_t v : mesh.cell_nodes)
-      if (v < 0 || v >= mesh.num_vertices())
-        return Status::Failure(path + ": cannot write: a cell refers to vertex " +
-                               std::to_string(v) + ", the mesh has " +
-                               std::to_string(mesh.num_vertices()));
+    check_writable_or_throw(path, mesh, options);
     if (is_openmesh_ext(ext)) {
       int fd = -1;
       const std::string tmp = make_temp(path, ext, &fd);
@@ -180,8 +222,7 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
       else if (ext == "mesh")
         io::write_medit(mesh, options, &bytes);
       else
-        return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
-                               ")");
+        io::write_stl(mesh, options, &bytes);
     } catch (const Error& e) {
       throw Error(path + ": " + e.what());
     }

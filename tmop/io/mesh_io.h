@@ -7,8 +7,9 @@
 //   .vtu                  VTK XML UnstructuredGrid (read: ascii, base64 inline, raw appended,
 //                         zlib-compressed; write: ascii or base64 inline)
 //   .mesh                 Medit / INRIA ASCII
-//   .obj .off .ply .stl   surface formats through OpenMesh (tri3 / quad4 cells; coordinates
-//                         pass through float32 in OpenMesh)
+//   .obj .off .ply        surface formats (tri3 / quad4 cells): read by tmop, written through
+//                         OpenMesh, which writes coordinates as float32
+//   .stl                  ASCII and binary STL (tri3 cells; binary holds float32)
 //
 // read_mesh: fills *mesh (cleared first) with Gmsh node order inside (io/ converts). space_dim is
 //   2 when every z coordinate is exactly 0 and no cell has dimension 3; otherwise 3 (surface
@@ -19,7 +20,15 @@
 //   Declared counts are checked against the file size before anything is allocated.
 // write_mesh: writes atomically (a temporary file in the same directory, then rename), so OUT
 //   either holds the complete new file or is untouched. 2D meshes are written with z = 0.
-//   Fails (Status) when the format cannot hold the mesh (e.g. a tet in .stl) or on I/O errors.
+//   Fails (Status "OUT: cannot write ...", no file written) when the format cannot hold the mesh
+//   (a tet or a quad in .stl, quadratic or 3D cells in .obj/.off/.ply, no faces at all in a
+//   surface format, quad9 / hex27 / points in .mesh) or on I/O errors.
+// check_writable: the checks write_mesh makes before writing, without writing: known extension,
+//   a consistent Mesh, cells the format can hold (for .obj/.off/.ply also a surface OpenMesh can
+//   build) and an existing, writable output directory. Linear in the mesh size, no file is
+//   created. Tools call it before a long computation whose result would be refused; it depends
+//   only on the cell types and connectivity (and, for binary .stl, on coordinates fitting in
+//   float32), which node movement does not change.
 // docs/formats.md describes node-order conversions and the tag mapping of every format.
 #ifndef TMOP_IO_MESH_IO_H_
 #define TMOP_IO_MESH_IO_H_
@@ -42,6 +51,7 @@ struct WriteOptions {
 
 Status read_mesh(const std::string& path, Mesh* mesh);
 Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions& options = {});
+Status check_writable(const std::string& path, const Mesh& mesh, const WriteOptions& options = {});
 
 }  // namespace tmop
 

@@ -495,7 +495,14 @@ class VtuReader {
         s_.fail_at(types_pos_,
                    "cell " + std::to_string(c) + ": unsupported VTK cell type " + num(vt));
       const double end = offsets[static_cast<std::size_t>(c)];
-      if (end - begin != cell_num_nodes(type) || end > static_cast<double>(conn.size()))
+      // A short connectivity array is the usual damage (truncated or hand-edited file), so it
+      // is named as such rather than as a wrong node count.
+      if (end > static_cast<double>(conn.size()))
+        s_.fail_at(conn_pos_, "cell " + std::to_string(c) + " (" + cell_name(type) +
+                                  ") ends at offset " + num(end) +
+                                  ", but the connectivity array has only " +
+                                  std::to_string(conn.size()) + " values");
+      if (end - begin != cell_num_nodes(type))
         s_.fail_at(conn_pos_, "cell " + std::to_string(c) + " (" + cell_name(type) +
                                   "): offsets give " + num(end - begin) + " nodes, expected " +
                                   std::to_string(cell_num_nodes(type)));

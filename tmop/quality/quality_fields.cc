@@ -34,6 +34,8 @@ void add_quality_fields(const QualityReport& report, Mesh* mesh) {
     return std::any_of(v.begin(), v.end(), [](double x) { return !std::isnan(x); });
   };
   if (any(report.certified)) put("certified", report.certified, mesh);
+  // Elements a fixed boundary freezes (topology_caps.h), so they can be found in a viewer.
+  if (any(report.all_boundary)) put("all_boundary", report.all_boundary, mesh);
   for (const QualityMeasure* m : report.measures())
     if (any(m->values)) put(m->key, m->values, mesh);
 }

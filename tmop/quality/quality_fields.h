@@ -1,7 +1,9 @@
 // tmop/quality/quality_fields.h
 // add_quality_fields: puts the report's per-cell arrays into Mesh::cell_data (one component
 // each, one value per cell) so that .vtu / .vtk output shows them: "inverted" (0/1),
-// "certified" (1/0, NaN without certificate) and every measure under its JSON key
+// "certified" (1/0, NaN without certificate), "all_boundary" (1 for an element with every corner
+// on the boundary, which a fixed boundary freezes, else 0; topology_caps.h) and every measure
+// under its JSON key
 // ("mean_ratio", "scaled_jacobian", "condition_number", "min_det", "min_angle_deg",
 // "max_angle_deg", "min_dihedral_deg", "max_dihedral_deg", "min_edge_length", "max_edge_length",
 // "edge_ratio"). Arrays that apply to no element are left out (angles of a volume mesh); in the

@@ -116,6 +116,7 @@ std::string quality_json(const QualityReport& r) {
   w.field("capped_valence_examples", integer_array(r.capped_valence_examples));
   w.field("max_valence", integer(r.max_valence));
   w.field("cells_all_boundary", integer(r.cells_all_boundary));
+  w.field("cells_all_boundary_examples", integer_array(r.cells_all_boundary_examples));
   w.close();
   write_range("angle_deg", r.min_angle, r.max_angle, &w);
   write_range("dihedral_deg", r.min_dihedral, r.max_dihedral, &w);

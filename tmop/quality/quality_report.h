@@ -64,14 +64,18 @@ struct QualityReport {
 
   EdgeLengthStats edge_length;  // over unique edges of the mesh
 
-  // Where node movement alone cannot reach the ideal (topology_caps.h): vertices whose valence
-  // is far from the ideal one (triangles 6, quads 4; interior vertices of all-triangle or
+  // Where node movement alone cannot reach the ideal (topology_caps.h): corner vertices whose
+  // valence is far from the ideal one (triangles 6, quads 4; interior vertices of all-triangle or
   // all-quad 2D / surface meshes: valence <= 3 or >= 9 for triangles, <= 2 or >= 6 for quads),
   // and elements whose corners all lie on the boundary (a fixed boundary freezes them).
   std::int64_t capped_valence_vertices = 0;
   std::vector<std::int64_t> capped_valence_examples;  // up to 20 vertex ids, ascending
   std::int64_t max_valence = 0;                       // over interior vertices (2D / surface)
   std::int64_t cells_all_boundary = 0;
+  std::vector<std::int64_t> cells_all_boundary_examples;  // up to 20 cell ids, ascending
+  // Per cell (num_cells entries): 1 for an element with every corner on the boundary, 0 for the
+  // other elements, NaN for lower-dimensional cells (the .vtu field "all_boundary").
+  std::vector<double> all_boundary;
 
   // The measures above in report order (for JSON, summaries, fields, plots).
   std::vector<const QualityMeasure*> measures() const;

@@ -55,9 +55,14 @@ std::string quality_summary(const QualityReport& r) {
                  ? " ...)"
                  : ")";
     }
-    if (r.cells_all_boundary > 0)
-      append(&out, "%s %" PRId64 " elements with every corner on the boundary",
+    if (r.cells_all_boundary > 0) {
+      append(&out, "%s %" PRId64 " elements with every corner on the boundary (ids",
              r.capped_valence_vertices > 0 ? ";" : "", r.cells_all_boundary);
+      for (std::int64_t c : r.cells_all_boundary_examples) append(&out, " %" PRId64, c);
+      out += r.cells_all_boundary > static_cast<std::int64_t>(r.cells_all_boundary_examples.size())
+                 ? " ...)"
+                 : ")";
+    }
     out += "\n";
   }
   if (r.edge_length.count > 0) {

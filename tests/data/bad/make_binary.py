@@ -64,3 +64,27 @@ write("appended_offset_beyond.vtu",
       (VTU % ("", "appended", ' offset="999999"', "",
               '<AppendedData encoding="raw">\n_')).encode() + struct.pack("<Q", 24) + point +
       b"\n</AppendedData>\n")
+
+# Surface formats (OpenMesh's binary layouts: little-endian, float32 coordinates).
+PLY_HEAD = (b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+            b"property float y\nproperty float z\nelement face 1\n"
+            b"property list uchar int vertex_indices\nend_header\n")
+good_vertices = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+write("nan_binary.ply", PLY_HEAD + struct.pack("<9f", 0, 0, 0, 1, float("nan"), 0, 0, 1, 0) +
+      struct.pack("<B3i", 3, 0, 1, 2))
+write("index_out_of_range_binary.ply", PLY_HEAD + good_vertices + struct.pack("<B3i", 3, 0, 1, 3))
+write("truncated_binary.ply", PLY_HEAD + good_vertices + struct.pack("<B2i", 3, 0, 1))
+OFF_HEAD = b"OFF BINARY\n" + struct.pack("<3i", 3, 1, 0)
+write("index_out_of_range_binary.off", OFF_HEAD + good_vertices + struct.pack("<4i", 3, 0, 1, 5))
+write("truncated_binary.off", OFF_HEAD + good_vertices + struct.pack("<3i", 3, 0, 1))
+
+
+def stl_binary(corners):
+    out = b"tmop bad".ljust(80, b" ") + struct.pack("<I", len(corners))
+    for tri in corners:
+        out += struct.pack("<3f", 0, 0, 1) + struct.pack("<9f", *tri) + struct.pack("<H", 0)
+    return out
+
+
+write("nan_binary.stl", stl_binary([(0, 0, 0, 1, 0, 0, 0, 1, 0), (0, 0, 0, 0, 1, 0, 0, float("inf"), 1)]))
+write("no_triangles_binary.stl", stl_binary([]))
