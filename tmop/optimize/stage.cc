@@ -20,316 +20,13 @@
 #include "tmop/geometry/boundary_constraints.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/metric/untangle.h"
+#include "tmop/optimize/g_table.h"
+#include "tmop/optimize/locality_order.h"
+#include "tmop/optimize/sample_measures.h"
 #include "tmop/optimize/sample_point_cost.h"
 
 namespace tmop {
 namespace {
-
-double det_d(const double* A, int d) {
-  if (d == 2) return A[0] * A[3] - A[1] * A[2];
-  return A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
-         A[2] * (A[3] * A[7] - A[4] * A[6]);
-}
-
-bool inverse_d(const double* A, int d, double* Ainv) {
-  const double det = det_d(A, d);
-  if (!(det != 0) || !std::isfinite(det)) return false;
-  if (d == 2) {
-    Ainv[0] = A[3] / det;
-    Ainv[1] = -A[1] / det;
-    Ainv[2] = -A[2] / det;
-    Ainv[3] = A[0] / det;
-    return true;
-  }
-  Ainv[0] = (A[4] * A[8] - A[5] * A[7]) / det;
-  Ainv[1] = (A[2] * A[7] - A[1] * A[8]) / det;
-  Ainv[2] = (A[1] * A[5] - A[2] * A[4]) / det;
-  Ainv[3] = (A[5] * A[6] - A[3] * A[8]) / det;
-  Ainv[4] = (A[0] * A[8] - A[2] * A[6]) / det;
-  Ainv[5] = (A[2] * A[3] - A[0] * A[5]) / det;
-  Ainv[6] = (A[3] * A[7] - A[4] * A[6]) / det;
-  Ainv[7] = (A[1] * A[6] - A[0] * A[7]) / det;
-  Ainv[8] = (A[0] * A[4] - A[1] * A[3]) / det;
-  return true;
-}
-
-// G_i = W^-T g_i for every node i: G[i*d + b] = sum_c Winv[c*d + b] g[i*d + c].
-void make_G(int n, int d, const double* grad, const double* Winv, double* G) {
-  for (int i = 0; i < n; ++i)
-    for (int b = 0; b < d; ++b) {
-      double v = 0;
-      for (int c = 0; c < d; ++c) v += Winv[c * d + b] * grad[i * d + c];
-      G[i * d + b] = v;
-    }
-}
-
-// T = F^T X G: F (space_dim x d, row-major) is the tangent frame of a surface cell, or null
-// when space_dim == d.
-void compute_T(int n, int d, const Mesh& mesh, const std::int32_t* nodes, const double* G,
-               double* T, const double* F = nullptr) {
-  for (int k = 0; k < d * d; ++k) T[k] = 0;
-  for (int i = 0; i < n; ++i) {
-    const double* x = mesh.vertex(nodes[i]);
-    double y[3];
-    if (F) {
-      for (int a = 0; a < d; ++a) {
-        y[a] = 0;
-        for (int c = 0; c < mesh.space_dim; ++c) y[a] += F[c * d + a] * x[c];
-      }
-      x = y;
-    }
-    for (int a = 0; a < d; ++a)
-      for (int b = 0; b < d; ++b) T[a * d + b] += x[a] * G[i * d + b];
-  }
-}
-
-// G = W^-T grad N per sample point and term, each distinct block stored once: uniform targets
-// (ideal shapes of one size) give one block per cell type and point of the rule, so the table
-// is tiny instead of n x d doubles per point (96 MB for 1M tets), and the blocks stay in cache.
-struct GTable {
-  std::vector<double> values;
-  std::vector<std::int64_t> offset;  // per sample point
-  const double* at(std::size_t p) const { return values.data() + offset[p]; }
-};
-
-// Builds a GTable from blocks given one at a time (`add`), sharing bit-identical ones.
-class GTableBuilder {
- public:
-  explicit GTableBuilder(GTable* table, std::size_t points) : table_(table) {
-    table_->offset.reserve(points);
-  }
-  void add(const double* block, int size) {
-    std::uint64_t h = 1469598103934665603ULL ^ static_cast<std::uint64_t>(size);
-    for (int k = 0; k < size; ++k) {
-      std::uint64_t bits;
-      std::memcpy(&bits, block + k, sizeof bits);
-      h = (h ^ bits) * 1099511628211ULL;
-    }
-    std::vector<std::int64_t>& bucket = index_[h];
-    for (std::int64_t off : bucket)
-      if (std::memcmp(table_->values.data() + off, block, size * sizeof(double)) == 0) {
-        table_->offset.push_back(off);
-        return;
-      }
-    const std::int64_t off = static_cast<std::int64_t>(table_->values.size());
-    table_->values.insert(table_->values.end(), block, block + size);
-    bucket.push_back(off);
-    table_->offset.push_back(off);
-  }
-
- private:
-  GTable* table_;
-  std::unordered_map<std::uint64_t, std::vector<std::int64_t>> index_;
-};
-
-// Per-cell tangent frames of a surface mesh (2D cells in 3D): 6 values per cell, the columns t1,
-// t2 of an orthonormal basis with t1 x t2 = n. Empty for planar and volume meshes.
-struct Frames {
-  std::vector<double> F;
-  const double* cell(int c) const { return F.empty() ? nullptr : F.data() + 6 * c; }
-};
-
-void frame_from_normal(const double* n_in, double* F) {
-  double n[3] = {n_in[0], n_in[1], n_in[2]};
-  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  for (double& v : n) v /= len;
-  // t1: the coordinate axis least aligned with n, made orthogonal to it.
-  int k = 0;
-  for (int a = 1; a < 3; ++a)
-    if (std::abs(n[a]) < std::abs(n[k])) k = a;
-  double t1[3] = {0, 0, 0};
-  t1[k] = 1;
-  const double dot = t1[0] * n[0] + t1[1] * n[1] + t1[2] * n[2];
-  for (int a = 0; a < 3; ++a) t1[a] -= dot * n[a];
-  const double l1 = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
-  for (double& v : t1) v /= l1;
-  const double t2[3] = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2],
-                        n[0] * t1[1] - n[1] * t1[0]};
-  for (int c = 0; c < 3; ++c) {
-    F[c * 2 + 0] = t1[c];
-    F[c * 2 + 1] = t2[c];
-  }
-}
-
-// Frames from each cell's own corner-polygon (Newell) normal: a surface mesh measured in its
-// cells' own planes (no geometry: folds are not visible this way).
-Frames own_frames(const Mesh& mesh) {
-  Frames f;
-  if (mesh.space_dim != 3 || mesh.dim() != 2) return f;
-  f.F.assign(6 * mesh.num_cells(), 0);
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    if (cell_dim(mesh.cell_type(c)) != 2) continue;
-    const int k = cell_info(mesh.cell_type(c)).num_corners;
-    double n[3] = {0, 0, 0};
-    for (int i = 0; i < k; ++i) {
-      const double* a = mesh.vertex(mesh.cell(c)[i]);
-      const double* b = mesh.vertex(mesh.cell(c)[(i + 1) % k]);
-      n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-      n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-      n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-    }
-    if (n[0] == 0 && n[1] == 0 && n[2] == 0) n[2] = 1;
-    frame_from_normal(n, f.F.data() + 6 * c);
-  }
-  return f;
-}
-
-// min det T over the sample points of term 0, and the cells where it is <= 0.
-double min_target_det(const Mesh& mesh, const std::vector<std::int32_t>& point_cell,
-                      const GTable& G, std::vector<int>* bad, const Frames& frames) {
-  const int d = mesh.dim();
-  double worst = std::numeric_limits<double>::infinity();
-  if (bad) bad->clear();
-  for (std::size_t p = 0; p < point_cell.size(); ++p) {
-    const int c = point_cell[p];
-    double T[9];
-    compute_T(mesh.cell_size(c), d, mesh, mesh.cell(c), G.at(p), T, frames.cell(c));
-    const double det = det_d(T, d);
-    worst = std::min(worst, det);
-    if (bad && !(det > 0) && (bad->empty() || bad->back() != c)) bad->push_back(c);
-  }
-  if (bad) {  // extra points come after the canonical ones: a cell can appear twice
-    std::sort(bad->begin(), bad->end());
-    bad->erase(std::unique(bad->begin(), bad->end()), bad->end());
-  }
-  return worst;
-}
-
-// Shape quality of T: d det(T)^(2/d) / |T|^2, negative when det T < 0.
-double shape_quality(const double* T, int d) {
-  double f = 0;
-  for (int k = 0; k < d * d; ++k) f += T[k] * T[k];
-  const double det = det_d(T, d);
-  if (!(f > 0)) return 0;
-  const double mag = d == 2 ? std::abs(det) : std::cbrt(det * det);
-  const double q = d * mag / f;
-  return det > 0 ? q : -q;
-}
-
-// G for the ideal element of each (type, point) of a rule.
-struct IdealTable {
-  std::vector<double> G[kNumCellTypes];
-  IdealTable(SampleRule rule, int d) {
-    for (int t = 0; t < kNumCellTypes; ++t) {
-      const CellType type = static_cast<CellType>(t);
-      if (cell_dim(type) != d) continue;
-      double W[9], Winv[9], grad[kMaxCellNodes * 3];
-      ideal_jacobian(type, W);
-      inverse_d(W, d, Winv);
-      const int n = cell_num_nodes(type);
-      for (const SamplePoint& p : sample_points(type, rule)) {
-        shape_gradients(type, p.xi, grad);
-        G[t].resize(G[t].size() + n * d);
-        make_G(n, d, grad, Winv, G[t].data() + G[t].size() - n * d);
-      }
-    }
-  }
-};
-
-IterationRecord measure(const Mesh& mesh, const IdealTable& table, const Frames& frames) {
-  IterationRecord rec;
-  const int d = mesh.dim();
-  rec.min_quality = std::numeric_limits<double>::infinity();
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    if (!mesh.is_element(c, d)) continue;
-    const CellType t = mesh.cell_type(c);
-    const int n = cell_num_nodes(t);
-    const std::vector<double>& G = table.G[static_cast<int>(t)];
-    bool inverted = false;
-    for (std::size_t off = 0; off < G.size(); off += n * d) {
-      double T[9];
-      compute_T(n, d, mesh, mesh.cell(c), G.data() + off, T, frames.cell(c));
-      const double q = shape_quality(T, d);
-      if (!(det_d(T, d) > 0)) inverted = true;
-      rec.min_quality = std::min(rec.min_quality, q);
-    }
-    rec.inverted += inverted;
-  }
-  if (!std::isfinite(rec.min_quality)) rec.min_quality = 0;
-  return rec;
-}
-
-// The cells measure() counts as inverted.
-std::vector<int> inverted_cells(const Mesh& mesh, const IdealTable& table, const Frames& frames) {
-  std::vector<int> out;
-  const int d = mesh.dim();
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    if (!mesh.is_element(c, d)) continue;
-    const CellType t = mesh.cell_type(c);
-    const int n = cell_num_nodes(t);
-    const std::vector<double>& G = table.G[static_cast<int>(t)];
-    for (std::size_t off = 0; off < G.size(); off += n * d) {
-      double T[9];
-      compute_T(n, d, mesh, mesh.cell(c), G.data() + off, T, frames.cell(c));
-      if (!(det_d(T, d) > 0)) {
-        out.push_back(c);
-        break;
-      }
-    }
-  }
-  return out;
-}
-
-// The frame that makes the problem dimensionless: x' = R (x - centre) / length.
-struct Normalization {
-  CoordinateFrame f;
-  void apply(Mesh* m) const {
-    const int sd = m->space_dim;
-    for (int v = 0; v < m->num_vertices(); ++v) {
-      double* x = m->vertex(v);
-      double y[3];
-      for (int a = 0; a < sd; ++a) {
-        y[a] = 0;
-        for (int b = 0; b < sd; ++b) y[a] += f.rotation[3 * a + b] * (x[b] - f.centre[b]);
-      }
-      for (int a = 0; a < sd; ++a) x[a] = y[a] / f.length;
-    }
-  }
-  void undo(Mesh* m) const {
-    const int sd = m->space_dim;
-    for (int v = 0; v < m->num_vertices(); ++v) {
-      double* x = m->vertex(v);
-      double y[3];
-      for (int a = 0; a < sd; ++a) {
-        y[a] = 0;
-        for (int b = 0; b < sd; ++b) y[a] += f.rotation[3 * b + a] * x[b];
-      }
-      for (int a = 0; a < sd; ++a) x[a] = f.centre[a] + f.length * y[a];
-    }
-  }
-};
-
-double edge_length(const Mesh& m, int a, int b) {
-  double s = 0;
-  for (int k = 0; k < m.space_dim; ++k) {
-    const double t = m.vertex(a)[k] - m.vertex(b)[k];
-    s += t * t;
-  }
-  return std::sqrt(s);
-}
-
-// Mean length over the element corner edges (shared edges counted once per cell: good enough
-// for a scale) and, per vertex, the shortest incident edge.
-double cell_edge_lengths(const Mesh& m, std::vector<double>* shortest) {
-  shortest->assign(m.num_vertices(), std::numeric_limits<double>::infinity());
-  double sum = 0;
-  long count = 0;
-  const int d = m.dim();
-  for (int c = 0; c < m.num_cells(); ++c) {
-    if (!m.is_element(c, d)) continue;
-    const CellInfo& info = cell_info(m.cell_type(c));
-    const std::int32_t* nodes = m.cell(c);
-    for (int e = 0; e < info.num_edges; ++e) {
-      const int a = nodes[info.edges[e][0]], b = nodes[info.edges[e][1]];
-      const double l = edge_length(m, a, b);
-      sum += l;
-      ++count;
-      (*shortest)[a] = std::min((*shortest)[a], l);
-      (*shortest)[b] = std::min((*shortest)[b], l);
-    }
-  }
-  return count ? sum / count : 1.0;
-}
 
 class StageCallback final : public ceres::IterationCallback {
  public:
@@ -485,59 +182,6 @@ struct CostKeyHash {
   }
 };
 
-// Spreads the low 21 bits of v to every third bit (Morton interleaving).
-std::uint64_t spread3(std::uint64_t v) {
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffULL;
-  v = (v | v << 16) & 0x1f0000ff0000ffULL;
-  v = (v | v << 8) & 0x100f00f00f00f00fULL;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-  v = (v | v << 2) & 0x1249249249249249ULL;
-  return v;
-}
-
-// The sample points ordered along a Morton (Z-order) curve through their cells' centroids;
-// points of one cell stay together and in order (stable sort).
-std::vector<std::int32_t> locality_order(const Mesh& mesh, const std::vector<std::int32_t>& cell) {
-  const int sd = mesh.space_dim;
-  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-  for (int a = 0; a < sd; ++a) {
-    lo[a] = std::numeric_limits<double>::infinity();
-    hi[a] = -lo[a];
-  }
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    for (int a = 0; a < sd; ++a) {
-      lo[a] = std::min(lo[a], mesh.vertex(v)[a]);
-      hi[a] = std::max(hi[a], mesh.vertex(v)[a]);
-    }
-  std::vector<std::uint64_t> key(cell.size());
-  int previous = -1;
-  std::uint64_t previous_key = 0;
-  for (std::size_t p = 0; p < cell.size(); ++p) {
-    const int c = cell[p];
-    if (c != previous) {
-      const int k = cell_info(mesh.cell_type(c)).num_corners;
-      std::uint64_t code = 0;
-      for (int a = 0; a < sd; ++a) {
-        double x = 0;
-        for (int i = 0; i < k; ++i) x += mesh.vertex(mesh.cell(c)[i])[a] / k;
-        const double span = hi[a] - lo[a];
-        const double t = span > 0 ? (x - lo[a]) / span : 0.0;
-        const auto q = static_cast<std::uint64_t>(std::clamp(t, 0.0, 1.0) * 2097151.0);
-        code |= spread3(q) << a;
-      }
-      previous = c;
-      previous_key = code;
-    }
-    key[p] = previous_key;
-  }
-  std::vector<std::int32_t> order(cell.size());
-  for (std::size_t p = 0; p < order.size(); ++p) order[p] = static_cast<std::int32_t>(p);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::int32_t a, std::int32_t b) { return key[a] < key[b]; });
-  return order;
-}
-
 std::string list_cells(const std::vector<int>& cells) {
   std::string s;
   for (std::size_t i = 0; i < cells.size() && i < 10; ++i)
@@ -569,48 +213,6 @@ bool linear_solver_from_name(const std::string& name, SolverOptions::LinearSolve
     return false;
   return true;
 }
-
-CoordinateFrame normalizing_frame(const Mesh& mesh) {
-  CoordinateFrame f;
-  const int nv = mesh.num_vertices(), sd = mesh.space_dim;
-  for (int v = 0; v < nv; ++v)
-    for (int a = 0; a < sd; ++a) f.centre[a] += mesh.vertex(v)[a] / nv;
-  std::vector<double> shortest;
-  f.length = cell_edge_lengths(mesh, &shortest);
-  if (mesh.dim() != sd || nv < sd + 1 || !(f.length > 0)) return f;
-  // Principal axes of the vertices (in units of the mean edge length, for conditioning).
-  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
-  for (int v = 0; v < nv; ++v) {
-    Eigen::Vector3d y = Eigen::Vector3d::Zero();
-    for (int a = 0; a < sd; ++a) y[a] = (mesh.vertex(v)[a] - f.centre[a]) / f.length;
-    C += y * y.transpose();
-  }
-  const Eigen::MatrixXd Cs = C.topLeftCorner(sd, sd);
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(Cs);
-  if (eig.info() != Eigen::Success) return f;
-  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-  // Axes by decreasing moment; each signed so that the third moment along it is positive.
-  for (int k = 0; k < sd; ++k) {
-    Eigen::Vector3d axis = Eigen::Vector3d::Zero();
-    axis.head(sd) = eig.eigenvectors().col(sd - 1 - k);
-    double m3 = 0;
-    for (int v = 0; v < nv; ++v) {
-      double t = 0;
-      for (int a = 0; a < sd; ++a) t += axis[a] * (mesh.vertex(v)[a] - f.centre[a]) / f.length;
-      m3 += t * t * t;
-    }
-    if (m3 < 0) axis = -axis;
-    R.row(k) = axis.transpose();
-  }
-  if (R.topLeftCorner(sd, sd).determinant() < 0) R.row(sd - 1) *= -1;
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) f.rotation[3 * a + b] = R(a, b);
-  return f;
-}
-
-void to_frame(const CoordinateFrame& frame, Mesh* mesh) { Normalization{frame}.apply(mesh); }
-
-void from_frame(const CoordinateFrame& frame, Mesh* mesh) { Normalization{frame}.undo(mesh); }
 
 IterationRecord measure_mesh(const Mesh& mesh, SampleRule rule) {
   const int d = mesh.dim();
@@ -679,9 +281,9 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
 
   // Solve in normalised coordinates; keep the original to restore on failure.
   const std::vector<double> original = mesh->coords;
-  const Normalization norm{spec.boundary ? spec.frame : normalizing_frame(*mesh)};
-  if (!(norm.f.length > 0)) return Status::Failure("the mesh has no edge of positive length");
-  norm.apply(mesh);
+  const CoordinateFrame frame = spec.boundary ? spec.frame : normalizing_frame(*mesh);
+  if (!(frame.length > 0)) return Status::Failure("the mesh has no edge of positive length");
+  to_frame(frame, mesh);
   // Surface meshes: per-cell tangent frames from the geometry's normals at the cell's corners.
   Frames frames;
   auto update_frames = [&]() {
@@ -712,7 +314,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     return Status::Failure(message);
   };
   std::vector<double> shortest;
-  cell_edge_lengths(*mesh, &shortest);
+  element_edge_lengths(*mesh, &shortest);
 
   // Targets -> G per term per point (GTable: identical blocks shared).
   std::vector<GTable> G(spec.terms.size());
@@ -723,15 +325,14 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
         target.reference) {
       reference_copy = *target.reference;
       if (reference_copy.num_vertices() == mesh->num_vertices()) {
-        Normalization rn = norm;  // same transform as the mesh: targets stay consistent
-        rn.apply(&reference_copy);
+        to_frame(frame, &reference_copy);  // the mesh's transform: targets stay consistent
       }
       target.reference = &reference_copy;
     }
     // Sizes, directions and positions the user gives are in the input's frame.
-    for (int a = 0; a < 3; ++a) target.frame.centre[a] = norm.f.centre[a];
-    target.frame.length = norm.f.length;
-    for (int a = 0; a < 9; ++a) target.frame.rotation[a] = norm.f.rotation[a];
+    for (int a = 0; a < 3; ++a) target.frame.centre[a] = frame.centre[a];
+    target.frame.length = frame.length;
+    for (int a = 0; a < 9; ++a) target.frame.rotation[a] = frame.rotation[a];
     std::vector<double> W;
     Status s = build_targets(*mesh, points, target, &W);
     if (!s.ok()) return fail(s.message());
@@ -880,7 +481,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     result->inverted_after = before.inverted;
     result->min_quality_after = before.min_quality;
     result->termination = "nothing to optimize: every vertex is fixed";
-    norm.undo(mesh);
+    from_frame(frame, mesh);
     mesh->coords = original;
     return Status::Ok();
   }
@@ -1060,7 +661,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                                           " eps rounds (final eps " + eps_text + ")")
             : "still inverted after " + std::to_string(untangle_rounds) + " eps rounds";
   }
-  norm.undo(mesh);
+  from_frame(frame, mesh);
   // Mapping back is not bit-exact; vertices that were never free keep their input coordinates.
   for (int v = 0; v < mesh->num_vertices(); ++v)
     if (fixed[v] || !in_problem[v])

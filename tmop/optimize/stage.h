@@ -18,30 +18,13 @@
 #include "tmop/element/sample_points.h"
 #include "tmop/mesh/mesh.h"
 #include "tmop/metric/metric.h"
+#include "tmop/optimize/coordinate_frame.h"
 #include "tmop/optimize/solver_options.h"
 #include "tmop/target/target.h"
 
 namespace tmop {
 
 class BoundaryConstraints;  // geometry/boundary_constraints.h
-
-// The frame a stage solves in: x' = R (x - centre) / length, R a rotation (row-major 3 x 3; the
-// leading 2 x 2 block for space_dim 2).
-struct CoordinateFrame {
-  double centre[3] = {0, 0, 0};
-  double length = 1;
-  double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-};
-// What a stage uses by default: the centroid of the vertices, the mean element edge length, and
-// for volume and planar meshes (dim == space_dim) the principal axes of the vertex cloud (each
-// axis signed by the third moment of the vertices along it, det R = +1). The frame follows the
-// mesh when it is translated, scaled or rotated, so the stage sees the same numbers and the
-// result follows the transform to round-off (meshes with repeated principal moments, such as
-// symmetric grids, leave the axes free: there only translation and scale are exact).
-CoordinateFrame normalizing_frame(const Mesh& mesh);
-// x' = R (x - centre) / length for every vertex, and back.
-void to_frame(const CoordinateFrame& frame, Mesh* mesh);
-void from_frame(const CoordinateFrame& frame, Mesh* mesh);
 
 struct TermSpec {
   std::shared_ptr<const Metric> metric;  // dimension must equal the mesh's element dimension
