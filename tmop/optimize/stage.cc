@@ -100,7 +100,9 @@ class StageCallback final : public ceres::IterationCallback {
       }
       // The metrics are dimensionless, so the decrease of the mean metric per element is too.
       // Two in a row, like the movement rule (one may follow a collapsed trust region).
-      const double decrease = 2 * s.cost_change / std::max(1, num_elements_);
+      // Reweighted rounds (power mean) scale the objective by the mean weight multiplier: the
+      // rule divides it out, so it means the same for every power.
+      const double decrease = 2 * s.cost_change / (std::max(1, num_elements_) * weight_scale_);
       small_decreases_ =
           !spec_.untangle && decrease < spec_.solver.objective_tolerance ? small_decreases_ + 1 : 0;
       if (small_decreases_ >= 2) {
@@ -112,6 +114,8 @@ class StageCallback final : public ceres::IterationCallback {
   }
 
   const std::string& reason() const { return reason_; }
+  // The mean weight multiplier of the current solve (1 without reweighting).
+  void set_weight_scale(double scale) { weight_scale_ = scale > 0 ? scale : 1.0; }
 
  private:
   void save(std::vector<double>* out) const {
@@ -133,6 +137,7 @@ class StageCallback final : public ceres::IterationCallback {
   double initial_gradient_ = 0;
   int small_steps_ = 0;
   int small_decreases_ = 0;
+  double weight_scale_ = 1.0;
   std::string reason_;
 };
 
@@ -575,8 +580,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     }
     if (surface_rounds) round_start = mesh->coords;
     if (spec.untangle) {
-      // eps schedule: after each solve, sigma = max(1 - E_final / E_initial, 0.1) (the relative
-      // decrease the solve achieved),
+      // eps schedule: after each solve, sigma = max(1 - E_final / E_initial, sigma_min) (the
+      // relative decrease the solve achieved, at least sigma_min),
       // mu = (1 - sigma) chi(min det, eps); eps = 2 sqrt(mu (mu - min det)) while min det < mu.
       std::vector<std::unique_ptr<UntangleMetric>> metrics;  // alive while costs point to them
       const double theta = untangle_metric->theta();
@@ -594,7 +599,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
         const double det_min = min_target_det(*mesh, point_cell, G[0], nullptr, frames);
         if (det_min > 0) break;
         const double energy = summary.final_cost;
-        const double sigma = std::max(1 - energy / summary.initial_cost, 0.1);
+        const double sigma =
+            std::max(1 - energy / summary.initial_cost, spec.untangle_sigma_min);
         const double mu = (1 - sigma) * UntangleMetric::chi(det_min, eps);
         eps = det_min < mu ? 2 * std::sqrt(mu * (mu - det_min)) : 1e-12;
         if (std::getenv("TMOP_DEBUG_EPS"))
@@ -624,10 +630,13 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
           // (elements that were bad are relieved, their neighbours pay, and so on: 10k
           // triangles ended with a worst mean ratio of 0.66 against 0.84 for the plain mean).
           multiplier.resize(costs.size(), 1.0);
+          double mean_multiplier = 0;
           for (std::size_t k = 0; k < costs.size(); ++k) {
             multiplier[k] = std::max(multiplier[k], std::pow(1 + v[k] / mean, spec.power - 1));
             costs[k].set_weight_multiplier(multiplier[k]);
+            mean_multiplier += multiplier[k] / costs.size();
           }
+          callback.set_weight_scale(mean_multiplier);
         }
         // Rounds before the last only steer the weights: a loose solve is enough.
         const bool last = round + 1 == rounds &&
