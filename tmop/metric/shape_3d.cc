@@ -73,11 +73,12 @@ class BarrierShapeMetric final : public FixedMetric {
   }
 
   bool residuals(const double* T, double* r, double* dr_dT) const override {
+    // The deviatoric form computes cof T and checks tau > 0 itself (Invariants::compute).
+    if (residual_ == Shape3dResidual::kDeviatoric) return deviatoric_residuals(T, r, dr_dT);
     double C[9];
     small_matrix::cofactor<3>(T, C);
     const double tau = small_matrix::det_from_cofactor<3>(T, C);
     if (!(tau > 0.0) || !std::isfinite(tau)) return false;
-    if (residual_ == Shape3dResidual::kDeviatoric) return deviatoric_residuals(T, r, dr_dT);
     const double a = 1.0 / std::cbrt(tau);
     double S[9], R[9];
     for (int n = 0; n < 9; ++n) S[n] = a * T[n];
