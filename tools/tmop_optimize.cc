@@ -85,7 +85,9 @@ DEFINE_double(power, 0,
               "Power order p of the objective: 1 = plain mean; > 1 weights the worst elements "
               "up (iteratively reweighted); 0 = the recipe's default (shape, auto, surface: 2; "
               "size_adapt: 1).");
-DEFINE_string(solver, "lm", "Trust-region method: lm (Levenberg-Marquardt) or dogleg.");
+DEFINE_string(solver, "lm",
+              "Trust-region method: lm (Levenberg-Marquardt) or dogleg (always sparse Cholesky: "
+              "slow on large 3D meshes).");
 DEFINE_string(linear_solver, "auto", "auto, cholesky (sparse normal Cholesky) or cgnr.");
 DEFINE_int32(max_iterations, 200,
              "Maximum Ceres iterations per solve of a stage (shape stages: per reweighting "

@@ -171,3 +171,36 @@ TEST(BarrierShape, WorstElementDoesNotGetWorse) {
 
 }  // namespace
 }  // namespace tmop
+
+namespace tmop {
+namespace {
+
+// Ceres's dogleg cannot run on CGNR: under the auto linear solver it gets sparse Cholesky at
+// any size (here past the Cholesky size limits), and an explicit CGNR is refused in one line.
+TEST(Dogleg, UsesSparseCholeskyUnderAutoAndRefusesCgnr) {
+  const int n = 3;
+  Mesh mesh = testing_grid::grid(CellType::kTet4, n);
+  std::mt19937 rng(5);
+  testing_grid::perturb(&mesh, n, 0.3, &rng);
+  ShapeOptions opt;
+  opt.solver.threads = 1;
+  opt.solver.method = SolverOptions::Method::kDogleg;
+  opt.solver.cholesky_max_free_coordinates_2d = 0;
+  opt.solver.cholesky_max_free_coordinates_3d = 0;
+  Mesh a = mesh;
+  RecipeResult result;
+  ASSERT_TRUE(improve_shape(&a, opt, &result).ok());
+  ASSERT_FALSE(result.stages.empty());
+  EXPECT_EQ(result.stages[0].linear_solver, "sparse_normal_cholesky");
+  EXPECT_LT(result.stages[0].final_objective, result.stages[0].initial_objective);
+
+  opt.solver.linear_solver = SolverOptions::LinearSolver::kCgnr;
+  Mesh b = mesh;
+  const Status s = improve_shape(&b, opt, &result);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("dogleg"), std::string::npos) << s.message();
+  EXPECT_EQ(b.coords, mesh.coords);  // the mesh is left as it was
+}
+
+}  // namespace
+}  // namespace tmop

@@ -21,7 +21,7 @@ struct IterationRecord {
 struct SolverOptions {
   enum class Method {
     kLevenbergMarquardt,  // default: robust, fewest rejected steps near barriers
-    kDogleg,              // cheaper steps; try it when barrier rejections are frequent
+    kDogleg,              // cheaper steps near barriers; needs sparse Cholesky (kAuto picks it)
   };
   enum class LinearSolver {
     kAuto,            // sparse Cholesky for small problems, CGNR + Jacobi otherwise

@@ -515,10 +515,16 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                                       ? ceres::DOGLEG
                                       : ceres::LEVENBERG_MARQUARDT;
   const int free_coordinates = static_cast<int>(free_vertices.size()) * d;
+  // Ceres's dogleg needs a factorisation: under kAuto it always gets sparse Cholesky.
+  const bool dogleg = spec.solver.method == SolverOptions::Method::kDogleg;
+  if (dogleg && spec.solver.linear_solver == SolverOptions::LinearSolver::kCgnr)
+    return fail("the dogleg method needs sparse Cholesky (Ceres's dogleg cannot use CGNR): use "
+                "the lm method with CGNR, or the cholesky or auto linear solver");
   bool cholesky = spec.solver.linear_solver == SolverOptions::LinearSolver::kSparseCholesky ||
                   (spec.solver.linear_solver == SolverOptions::LinearSolver::kAuto &&
-                   free_coordinates <= (d == 2 ? spec.solver.cholesky_max_free_coordinates_2d
-                                               : spec.solver.cholesky_max_free_coordinates_3d));
+                   (dogleg ||
+                    free_coordinates <= (d == 2 ? spec.solver.cholesky_max_free_coordinates_2d
+                                                : spec.solver.cholesky_max_free_coordinates_3d)));
   if (cholesky) {
     so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
     result->linear_solver = "sparse_normal_cholesky";
