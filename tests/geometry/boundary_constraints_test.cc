@@ -14,6 +14,7 @@
 #include "tmop/geometry/cylinder_manifold.h"
 #include "tmop/geometry/plane_manifold.h"
 #include "tmop/geometry/polyline_manifold.h"
+#include "tmop/geometry/reference_surface.h"
 #include "tmop/geometry/sphere_manifold.h"
 #include "tmop/geometry/triangle_surface_manifold.h"
 
@@ -190,6 +191,36 @@ TEST(BoundaryConstraints, ReferenceSurfaceFile) {
   EXPECT_EQ(on, bc->num_on_user_geometry());
   EXPECT_EQ(on, 80);
   walk_all(mesh, *bc, 0.03, 1e-14);
+}
+
+// Reference surfaces go through tmop's strict readers: a malformed file is one line naming
+// the file and the place (OpenMesh's reader, used before, allocated 16 GB for the OFF below),
+// and quads are split into two triangles.
+TEST(ReferenceSurface, MalformedFilesAreRefusedWithTheirPlaceAndQuadsAreSplit) {
+  const std::string dir = ::testing::TempDir();
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir + name) << text;
+    return dir + name;
+  };
+  std::vector<double> v;
+  std::vector<std::int32_t> t;
+  const std::string off = write("huge_counts.off", "OFF\n100000000 100000000 0\n0 0 0\n");
+  Status s = read_reference_surface(off, &v, &t);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.message().rfind(off, 0), 0u) << s.message();
+  EXPECT_EQ(s.message().find('\n'), std::string::npos) << s.message();
+  const std::string obj = write("bad_coordinate.obj", "v 0 0 0\nv 1 0 zero\nv 0 1 0\nf 1 2 3\n");
+  s = read_reference_surface(obj, &v, &t);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find(obj + ":2"), std::string::npos) << s.message();
+  const std::string quad =
+      write("quad.obj", "v 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 2 3 4\n");
+  ASSERT_TRUE(read_reference_surface(quad, &v, &t).ok());
+  EXPECT_EQ(v.size(), 12u);
+  EXPECT_EQ(t, (std::vector<std::int32_t>{0, 1, 2, 0, 2, 3}));
+  const std::string planar = write("planar.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  ASSERT_TRUE(read_reference_surface(planar, &v, &t).ok());
+  EXPECT_EQ(v, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0}));  // z = 0 kept in 3D
 }
 
 TEST(BoundaryConstraints, SurfaceMeshNormalsFollowTheCells) {

@@ -1,24 +1,13 @@
-// GCC 12 reports a false -Wmaybe-uninitialized inside OpenMesh's VectorT<double> copies when its
-// templates are instantiated here; the warning is about OpenMesh's code, not ours.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include "tmop/geometry/reference_surface.h"
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <algorithm>
 #include <cctype>
-#include <fstream>
+
+#include "tmop/element/cell_type.h"
+#include "tmop/io/mesh_io.h"
+#include "tmop/mesh/mesh.h"
 
 namespace tmop {
-namespace {
-
-struct DoubleTraits : public OpenMesh::DefaultTraits {
-  typedef OpenMesh::Vec3d Point;
-  typedef OpenMesh::Vec3d Normal;
-};
-typedef OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits> SurfaceMesh;
-
-}  // namespace
 
 Status read_reference_surface(const std::string& path, std::vector<double>* vertices,
                               std::vector<std::int32_t>* triangles) {
@@ -31,28 +20,22 @@ Status read_reference_surface(const std::string& path, std::vector<double>* vert
   if (ext != "stl" && ext != "obj" && ext != "off" && ext != "ply") {
     return Status::Failure(path + ": reference surfaces are .stl, .obj, .off or .ply files");
   }
-  if (!std::ifstream(path).good()) return Status::Failure(path + ": cannot open the file");
-  SurfaceMesh mesh;
-  OpenMesh::IO::Options options;
-  if (!OpenMesh::IO::read_mesh(mesh, path, options)) {
-    return Status::Failure(path + ": OpenMesh could not read this surface");
+  // tmop's own readers: strict, with FILE:LINE errors on malformed or truncated files.
+  Mesh mesh;
+  Status s = read_mesh(path, &mesh);
+  if (!s.ok()) return s;
+  const int sd = mesh.space_dim;  // 2 when every z is 0 (a planar surface): z = 0 then
+  vertices->reserve(3 * static_cast<std::size_t>(mesh.num_vertices()));
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const double* x = mesh.vertex(v);
+    vertices->insert(vertices->end(), {x[0], sd > 1 ? x[1] : 0.0, sd > 2 ? x[2] : 0.0});
   }
-  vertices->reserve(3 * mesh.n_vertices());
-  for (const auto vh : mesh.vertices()) {
-    const auto& p = mesh.point(vh);
-    vertices->insert(vertices->end(), {p[0], p[1], p[2]});
-  }
-  for (const auto fh : mesh.faces()) {
-    std::int32_t first = -1, prev = -1;
-    for (const auto vh : mesh.fv_range(fh)) {
-      const std::int32_t v = vh.idx();
-      if (first < 0) {
-        first = v;
-      } else if (prev != first) {
-        triangles->insert(triangles->end(), {first, prev, v});
-      }
-      prev = v;
-    }
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const CellInfo& info = cell_info(mesh.cell_type(c));
+    if (info.dim != 2) continue;
+    const std::int32_t* n = mesh.cell(c);
+    for (int k = 1; k + 1 < info.num_corners; ++k)  // a fan over the corners
+      triangles->insert(triangles->end(), {n[0], n[k], n[k + 1]});
   }
   if (triangles->empty()) return Status::Failure(path + ": the surface has no faces");
   return Status::Ok();

@@ -1,11 +1,10 @@
 // tmop/geometry/reference_surface.h
-// Reads a user's reference surface (.stl .obj .off .ply, through OpenMesh) as a triangle soup
-// with shared vertices: polygons are split into fans. geometry/ reads the file itself rather
-// than through io/ so that the geometry library keeps depending on mesh/ only (io/ sits beside
-// it, not below it: docs/architecture.md).
+// Reads a user's reference surface (.stl .obj .off .ply) with tmop's own readers (io/) as a
+// triangle soup with shared vertices: quads are split into fans.
 //
 // Output: vertices (nv * 3, vertex-major) and triangles (nt * 3 indices), replaced.
-// Failure (Status "PATH: ..."): unknown extension, unreadable file, no triangles.
+// Failure (Status "PATH: ...", with the line or byte for malformed files): unknown
+// extension, unreadable or malformed file, no triangles.
 #ifndef TMOP_GEOMETRY_REFERENCE_SURFACE_H_
 #define TMOP_GEOMETRY_REFERENCE_SURFACE_H_
 
