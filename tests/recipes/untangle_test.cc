@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <random>
 
 #include "tests/optimize/grid_meshes.h"
@@ -184,6 +186,27 @@ TEST(Untangle, FailsClearlyWhenAnInvertedElementHasEveryNodeFixed) {
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find("every node fixed"), std::string::npos) << s.message();
   EXPECT_EQ(mesh.coords, before);
+}
+
+// The eps schedule's sigma floor must lie in (0, 1): sigma >= 1 would set eps to 0 (or NaN),
+// a negative one would let eps grow. Refused up front, the mesh untouched.
+TEST(Untangle, RefusesASigmaFloorOutsideZeroOne) {
+  Mesh mesh = grid(CellType::kTri3, 4);
+  mesh.vertex(6)[0] += 0.6;  // fold an interior vertex over its neighbours
+  const std::vector<double> before = mesh.coords;
+  for (double sigma : {0.0, 1.0, -0.5, 2.0, std::nan("")}) {
+    UntangleOptions opt;
+    opt.sigma_min = sigma;
+    RecipeResult result;
+    const Status s = untangle(&mesh, opt, &result);
+    ASSERT_FALSE(s.ok()) << sigma;
+    EXPECT_NE(s.message().find("sigma_min"), std::string::npos) << s.message();
+    EXPECT_EQ(mesh.coords, before);
+  }
+  UntangleOptions opt;
+  opt.sigma_min = 0.1;  // the published floor still works
+  RecipeResult result;
+  EXPECT_TRUE(untangle(&mesh, opt, &result).ok());
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include "tmop/optimize/locality_order.h"
 #include "tmop/optimize/sample_measures.h"
 #include "tmop/optimize/sample_point_cost.h"
+#include "tmop/quality/parallel_for.h"
 
 namespace tmop {
 namespace {
@@ -68,8 +69,11 @@ class StageCallback final : public ceres::IterationCallback {
                    rec.seconds);
     if (spec_.solver.progress) spec_.solver.progress(rec);
 
-    if (s.iteration == 0) {
+    if (s.iteration == 0) {  // a new solve (reweighting or frame round): its own counts
       initial_gradient_ = s.gradient_max_norm;
+      small_steps_ = 0;
+      small_decreases_ = 0;
+      save(&previous_);
       return ceres::SOLVER_CONTINUE;
     }
     if (initial_gradient_ > 0 &&
@@ -140,19 +144,6 @@ class StageCallback final : public ceres::IterationCallback {
   double weight_scale_ = 1.0;
   std::string reason_;
 };
-
-// Runs a on a second thread and b on this one when concurrent, else a then b.
-template <class A, class B>
-void both(bool concurrent, const A& a, const B& b) {
-  if (!concurrent) {
-    a();
-    b();
-    return;
-  }
-  std::thread other(a);
-  b();
-  other.join();
-}
 
 // Exact mean of sum_t c_t mu_t over elements (weights of a cell's points sum to 1).
 double exact_objective(const Mesh& mesh, const StageSpec& spec, const std::vector<GTable>& G,
@@ -261,6 +252,14 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   }
   for (double x : mesh->coords)
     if (!std::isfinite(x)) return Status::Failure("the mesh has a non-finite coordinate");
+  if (!(spec.untangle_sigma_min > 0 && spec.untangle_sigma_min < 1))
+    return Status::Failure("untangling: sigma_min must lie in (0, 1)");
+  // Ceres's dogleg needs a factorisation: under kAuto it always gets sparse Cholesky (below).
+  const bool dogleg = spec.solver.method == SolverOptions::Method::kDogleg;
+  if (dogleg && spec.solver.linear_solver == SolverOptions::LinearSolver::kCgnr)
+    return Status::Failure(
+        "the dogleg method needs sparse Cholesky (Ceres's dogleg cannot use CGNR): use the lm "
+        "method with CGNR, or the cholesky or auto linear solver");
 
   // Fixed vertices: given, or the boundary.
   std::vector<char> fixed = spec.fixed;
@@ -374,7 +373,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   const bool concurrent = spec.solver.threads != 1;
   IterationRecord before;
   std::vector<int> bad;
-  both(
+  side_by_side(
       concurrent, [&] { before = measure(*mesh, table, frames); },
       [&] {
         result->initial_objective =
@@ -515,11 +514,6 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                                       ? ceres::DOGLEG
                                       : ceres::LEVENBERG_MARQUARDT;
   const int free_coordinates = static_cast<int>(free_vertices.size()) * d;
-  // Ceres's dogleg needs a factorisation: under kAuto it always gets sparse Cholesky.
-  const bool dogleg = spec.solver.method == SolverOptions::Method::kDogleg;
-  if (dogleg && spec.solver.linear_solver == SolverOptions::LinearSolver::kCgnr)
-    return fail("the dogleg method needs sparse Cholesky (Ceres's dogleg cannot use CGNR): use "
-                "the lm method with CGNR, or the cholesky or auto linear solver");
   bool cholesky = spec.solver.linear_solver == SolverOptions::LinearSolver::kSparseCholesky ||
                   (spec.solver.linear_solver == SolverOptions::LinearSolver::kAuto &&
                    (dogleg ||
@@ -654,13 +648,14 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
           // (elements that were bad are relieved, their neighbours pay, and so on: 10k
           // triangles ended with a worst mean ratio of 0.66 against 0.84 for the plain mean).
           multiplier.resize(costs.size(), 1.0);
-          double mean_multiplier = 0;
+          double weighted = 0, total = 0;  // the objective's mean multiplier
           for (std::size_t k = 0; k < costs.size(); ++k) {
             multiplier[k] = std::max(multiplier[k], std::pow(1 + v[k] / mean, spec.power - 1));
             costs[k].set_weight_multiplier(multiplier[k]);
-            mean_multiplier += multiplier[k] / costs.size();
+            weighted += point_weight[cost_point[k]] * multiplier[k];
+            total += point_weight[cost_point[k]];
           }
-          callback.set_weight_scale(mean_multiplier);
+          callback.set_weight_scale(total > 0 ? weighted / total : 1.0);
         }
         // Rounds before the last only steer the weights: a loose solve is enough.
         const bool last = round + 1 == rounds &&
@@ -678,7 +673,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
 
   // Ceres leaves the best parameters in place; the callback may have seen a later state.
   IterationRecord after;
-  both(
+  side_by_side(
       concurrent, [&] { after = measure(*mesh, table, frames); },
       [&] {
         result->min_det_after =

@@ -2,12 +2,15 @@
 // parallel_chunks: runs body(chunk, begin, end) for the fixed chunks [chunk * size, ...) of
 // [0, n) on up to `threads` std::threads (0 = hardware_concurrency). The chunking depends on n and
 // size only, so per-chunk results combined in chunk order are the same for every thread count.
+// side_by_side (below): two different tasks at once.
 #ifndef TMOP_QUALITY_PARALLEL_FOR_H_
 #define TMOP_QUALITY_PARALLEL_FOR_H_
 
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <exception>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -35,6 +38,42 @@ void parallel_chunks(std::int64_t n, std::int64_t size, int threads, const Body&
   for (int i = 1; i < workers; ++i) pool.emplace_back(work);
   work();
   for (std::thread& t : pool) t.join();
+}
+
+// side_by_side: runs a() on a second thread and b() on this one when concurrent (a() then b()
+// when not, or when no thread can be started). An exception from a() is rethrown here after
+// both finished; one from b() propagates after a() finished. For read-only passes over shared
+// data that each write their own results.
+template <class A, class B>
+void side_by_side(bool concurrent, const A& a, const B& b) {
+  std::exception_ptr error;
+  std::thread other;
+  if (concurrent) {
+    try {
+      other = std::thread([&] {
+        try {
+          a();
+        } catch (...) {
+          error = std::current_exception();
+        }
+      });
+    } catch (const std::system_error&) {
+      // no thread to be had: run in turn below
+    }
+  }
+  if (!other.joinable()) {
+    a();
+    b();
+    return;
+  }
+  {
+    struct Join {
+      std::thread& t;
+      ~Join() { t.join(); }
+    } join{other};
+    b();
+  }
+  if (error) std::rethrow_exception(error);
 }
 
 }  // namespace tmop

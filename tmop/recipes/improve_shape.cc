@@ -3,10 +3,10 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 #include "tmop/mesh/topology.h"
 #include "tmop/metric/power_mean.h"
+#include "tmop/quality/parallel_for.h"
 #include "tmop/quality/worst_quality.h"
 
 namespace tmop {
@@ -46,20 +46,21 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
   // The boundary's facet matching runs beside the quality passes (1M tets: 0.6 s hidden).
   std::vector<char> fixed = options.fixed;
   const bool need_mask = fixed.empty() && !geometry;
-  std::thread mask_thread;
-  if (need_mask && threads != 1)
-    mask_thread = std::thread([&] { fixed = boundary_vertex_mask(*mesh); });
-  result->before = measure_mesh(*mesh, options.rule);
   std::vector<double> q_before;
   double worst_before = 0;
-  if (options.guard_worst) {
-    q_before = cell_headline_quality(*mesh, threads);
-    worst_before = std::numeric_limits<double>::infinity();
-    for (double q : q_before)
-      if (!std::isnan(q)) worst_before = std::min(worst_before, q);
-  }
-  if (mask_thread.joinable()) mask_thread.join();
-  if (need_mask && threads == 1) fixed = boundary_vertex_mask(*mesh);
+  side_by_side(
+      threads != 1,
+      [&] {
+        if (need_mask) fixed = boundary_vertex_mask(*mesh);
+      },
+      [&] {
+        result->before = measure_mesh(*mesh, options.rule);
+        if (!options.guard_worst) return;
+        q_before = cell_headline_quality(*mesh, threads);
+        worst_before = std::numeric_limits<double>::infinity();
+        for (double q : q_before)
+          if (!std::isnan(q)) worst_before = std::min(worst_before, q);
+      });
   if (fixed.empty() && geometry) fixed.assign(mesh->num_vertices(), 0);
   int held_cells = 0;
   for (int round = 0; round <= options.guard_rounds; ++round) {

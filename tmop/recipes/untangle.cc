@@ -67,6 +67,8 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
   result->recipe = options.improve_shape_after ? "auto" : "untangle";
   const int d = mesh->dim();
   if (d < 2) return Status::Failure("the mesh has no 2D or 3D elements");
+  if (!(options.sigma_min > 0 && options.sigma_min < 1))
+    return Status::Failure("untangle options: sigma_min must lie in (0, 1)");
   result->before = measure_mesh(*mesh, options.rule);
   auto finish = [&]() {
     result->after = measure_mesh(*mesh, options.rule);
