@@ -15,6 +15,7 @@
 #include "tmop/geometry/plane_manifold.h"
 #include "tmop/geometry/polyline_manifold.h"
 #include "tmop/geometry/reference_surface.h"
+#include "tmop/io/mesh_io.h"
 #include "tmop/geometry/sphere_manifold.h"
 #include "tmop/geometry/triangle_surface_manifold.h"
 
@@ -221,6 +222,42 @@ TEST(ReferenceSurface, MalformedFilesAreRefusedWithTheirPlaceAndQuadsAreSplit) {
   const std::string planar = write("planar.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   ASSERT_TRUE(read_reference_surface(planar, &v, &t).ok());
   EXPECT_EQ(v, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0}));  // z = 0 kept in 3D
+}
+
+// What scanners and CAD exporters write, and a mesh reader refuses (read_mesh stays strict),
+// is fine as geometry: degenerate facets are dropped with their vertices, polygons become fans.
+TEST(ReferenceSurface, DegenerateFacetsAreDroppedAndPolygonsSplit) {
+  const std::string dir = ::testing::TempDir();
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir + name) << text;
+    return dir + name;
+  };
+  auto facet = [](const char* a, const char* b, const char* c) {
+    return std::string("facet normal 0 0 1\nouter loop\nvertex ") + a + "\nvertex " + b +
+           "\nvertex " + c + "\nendloop\nendfacet\n";
+  };
+  const std::string stl = write(
+      "degenerate.stl", "solid s\n" + facet("0 0 0", "1 0 0", "0 1 0") +
+                            facet("5 5 5", "5 5 5", "6 5 5") + facet("1 0 0", "1 1 0", "0 1 0") +
+                            "endsolid s\n");
+  Mesh strict;
+  EXPECT_FALSE(read_mesh(stl, &strict).ok());
+  std::vector<double> v;
+  std::vector<std::int32_t> t;
+  SurfaceRepair repair;
+  ASSERT_TRUE(read_reference_surface(stl, &v, &t, &repair).ok());
+  EXPECT_EQ(repair.dropped_degenerate, 1);
+  EXPECT_EQ(t.size(), 6u);
+  EXPECT_EQ(v.size(), 12u);  // the degenerate facet's corners are not kept
+  const std::string obj = write("pentagon.obj",
+                                "v 0 0 1\nv 1 0 1\nv 2 1 1\nv 1 2 1\nv 0 1 1\nv 9 9 9\n"
+                                "f 1 2 3 4 5\nf 1 1 2\n");
+  EXPECT_FALSE(read_mesh(obj, &strict).ok());
+  ASSERT_TRUE(read_reference_surface(obj, &v, &t, &repair).ok());
+  EXPECT_EQ(repair.split_polygons, 1);
+  EXPECT_EQ(repair.dropped_degenerate, 1);
+  EXPECT_EQ(t, (std::vector<std::int32_t>{0, 1, 2, 0, 2, 3, 0, 3, 4}));
+  EXPECT_EQ(v.size(), 15u);  // the unused vertex 9 9 9 is left out
 }
 
 TEST(BoundaryConstraints, SurfaceMeshNormalsFollowTheCells) {

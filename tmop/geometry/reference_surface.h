@@ -1,6 +1,8 @@
 // tmop/geometry/reference_surface.h
 // Reads a user's reference surface (.stl .obj .off .ply) with tmop's own readers (io/) as a
-// triangle soup with shared vertices: quads are split into fans.
+// triangle soup with shared vertices: quads and polygons (up to 64 corners) are split into fans,
+// facets with a repeated corner are dropped (counted in *report when given), vertices no
+// triangle uses are left out.
 //
 // Output: vertices (nv * 3, vertex-major) and triangles (nt * 3 indices), replaced.
 // Failure (Status "PATH: ...", with the line or byte for malformed files): unknown
@@ -13,11 +15,13 @@
 #include <vector>
 
 #include "tmop/core/status.h"
+#include "tmop/io/mesh_io.h"
 
 namespace tmop {
 
 Status read_reference_surface(const std::string& path, std::vector<double>* vertices,
-                              std::vector<std::int32_t>* triangles);
+                              std::vector<std::int32_t>* triangles,
+                              SurfaceRepair* report = nullptr);
 
 }  // namespace tmop
 

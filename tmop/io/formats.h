@@ -29,14 +29,17 @@ void read_medit(const std::string& path, const std::string& data, Mesh* mesh);
 void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out);
 void check_medit_writable(const Mesh& mesh);
 
-void read_stl(const std::string& path, const std::string& data, Mesh* mesh);
+// repair (null: strict) makes the surface readers drop faces with a repeated corner and split
+// faces of more than 4 corners into triangle fans, counting both (mesh_io.h, SurfaceRepair).
+void read_stl(const std::string& path, const std::string& data, Mesh* mesh,
+              SurfaceRepair* repair = nullptr);
 void write_stl(const Mesh& mesh, const WriteOptions& options, std::string* out);
 void check_stl_writable(const Mesh& mesh, const WriteOptions& options);
 
 // .obj .off .ply (ext without the dot, lower case): tmop reads them (surface_read.cc); OpenMesh
 // writes them to a path, a temporary one whose extension selects the format (openmesh_io.cc).
 void read_surface(const std::string& path, const std::string& ext, const std::string& data,
-                  Mesh* mesh);
+                  Mesh* mesh, SurfaceRepair* repair = nullptr);
 void write_openmesh(const std::string& path, const std::string& ext, const Mesh& mesh,
                     const WriteOptions& options);
 void check_openmesh_writable(const std::string& ext, const Mesh& mesh);

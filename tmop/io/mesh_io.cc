@@ -100,8 +100,11 @@ void finish_read(Mesh* mesh) {
 
 }  // namespace io
 
-Status read_mesh(const std::string& path, Mesh* mesh) {
+Status read_mesh(const std::string& path, Mesh* mesh) { return read_mesh(path, mesh, nullptr); }
+
+Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair) {
   mesh->clear();
+  if (repair) *repair = SurfaceRepair();
   const std::string ext = extension(path);
   try {
     if (ext != "msh" && ext != "vtk" && ext != "vtu" && ext != "mesh" && ext != "stl" &&
@@ -113,8 +116,8 @@ Status read_mesh(const std::string& path, Mesh* mesh) {
     if (ext == "vtk") io::read_vtk(path, data, mesh);
     if (ext == "vtu") io::read_vtu(path, data, mesh);
     if (ext == "mesh") io::read_medit(path, data, mesh);
-    if (ext == "stl") io::read_stl(path, data, mesh);
-    if (is_openmesh_ext(ext)) io::read_surface(path, ext, data, mesh);
+    if (ext == "stl") io::read_stl(path, data, mesh, repair);
+    if (is_openmesh_ext(ext)) io::read_surface(path, ext, data, mesh, repair);
     io::finish_read(mesh);
   } catch (const Error& e) {
     mesh->clear();

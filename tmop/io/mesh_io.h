@@ -50,6 +50,16 @@ struct WriteOptions {
 };
 
 Status read_mesh(const std::string& path, Mesh* mesh);
+
+// For reference geometry (a surface to slide on, not a mesh to optimise): the .stl, .obj, .off
+// and .ply readers drop faces with a repeated corner (degenerate facets) and split faces of
+// more than 4 corners into triangle fans instead of refusing the file, and count both here.
+// Every other error is reported as by read_mesh; other formats ignore the repair.
+struct SurfaceRepair {
+  int dropped_degenerate = 0;
+  int split_polygons = 0;
+};
+Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair);
 Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions& options = {});
 Status check_writable(const std::string& path, const Mesh& mesh, const WriteOptions& options = {});
 

@@ -56,25 +56,32 @@ struct CornerHash {
 // Collects triangles, merging equal corners.
 class TriangleSoup {
  public:
-  explicit TriangleSoup(Mesh* mesh) : mesh_(mesh) {}
-  // Returns false when two corners are equal (a degenerate facet tmop cannot hold as a tri3).
+  TriangleSoup(Mesh* mesh, SurfaceRepair* repair) : mesh_(mesh), repair_(repair) {}
+  // Returns false when two corners are equal (a degenerate facet tmop cannot hold as a tri3),
+  // unless repairing: then the facet is dropped (and counted) before any of its corners is added.
   bool add(Corner c[3]) {
+    for (int k = 0; k < 3; ++k)
+      for (double& v : c[k].x) v += 0.0;  // -0 becomes +0, so both merge
+    if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2]) {
+      if (!repair_) return false;
+      ++repair_->dropped_degenerate;
+      return true;
+    }
     std::int32_t nodes[3];
     for (int k = 0; k < 3; ++k) {
-      for (double& v : c[k].x) v += 0.0;  // -0 becomes +0, so both merge
       auto it = index_.find(c[k]);
       if (it == index_.end()) {
         it = index_.emplace(c[k], mesh_->add_vertex(c[k].x)).first;
       }
       nodes[k] = it->second;
     }
-    if (nodes[0] == nodes[1] || nodes[1] == nodes[2] || nodes[0] == nodes[2]) return false;
     mesh_->add_cell(CellType::kTri3, nodes);
     return true;
   }
 
  private:
   Mesh* mesh_;
+  SurfaceRepair* repair_;
   std::unordered_map<Corner, std::int32_t, CornerHash> index_;
 };
 
@@ -86,8 +93,8 @@ bool keyword_is(std::string_view t, const char* k) {
   return true;
 }
 
-void read_ascii(Scanner* s, Mesh* mesh) {
-  TriangleSoup soup(mesh);
+void read_ascii(Scanner* s, Mesh* mesh, SurfaceRepair* repair) {
+  TriangleSoup soup(mesh, repair);
   std::string_view t;
   // expect(): the next token must be keyword k.
   auto expect = [&](const char* k) {
@@ -148,7 +155,7 @@ void read_ascii(Scanner* s, Mesh* mesh) {
   if (solids == 0 || mesh->num_cells() == 0) s->fail_at(0, "no facets");
 }
 
-void read_binary(Scanner* s, Mesh* mesh) {
+void read_binary(Scanner* s, Mesh* mesh, SurfaceRepair* repair) {
   const std::string_view d = s->data();
   if (d.size() < 84) s->fail_byte(d.size(), "binary STL shorter than its 84-byte header");
   std::uint32_t n;
@@ -157,7 +164,7 @@ void read_binary(Scanner* s, Mesh* mesh) {
     s->fail_byte(80, "binary STL declares " + std::to_string(n) + " triangles, the file size " +
                          std::to_string(d.size()) + " does not match");
   if (n == 0) s->fail_byte(80, "no triangles");
-  TriangleSoup soup(mesh);
+  TriangleSoup soup(mesh, repair);
   mesh->coords.reserve(static_cast<std::size_t>(n) * 3);  // at most 3 per triangle, usually 1/2
   for (std::uint32_t f = 0; f < n; ++f) {
     const std::size_t rec = 84 + static_cast<std::size_t>(f) * 50;
@@ -215,7 +222,8 @@ void check_stl_writable(const Mesh& mesh, const WriteOptions& options) {
   }
 }
 
-void read_stl(const std::string& path, const std::string& data, Mesh* mesh) {
+void read_stl(const std::string& path, const std::string& data, Mesh* mesh,
+              SurfaceRepair* repair) {
   mesh->space_dim = 3;
   Scanner s(path, data);
   if (s.at_end()) s.fail_at(0, "empty file");
@@ -229,9 +237,9 @@ void read_stl(const std::string& path, const std::string& data, Mesh* mesh) {
   const bool solid = !binary_size && s.try_token(&first) && keyword_is(first, "solid");
   s.set_pos(0);
   if (solid)
-    read_ascii(&s, mesh);
+    read_ascii(&s, mesh, repair);
   else
-    read_binary(&s, mesh);
+    read_binary(&s, mesh, repair);
 }
 
 void write_stl(const Mesh& mesh, const WriteOptions& options, std::string* out) {

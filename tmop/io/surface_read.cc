@@ -39,7 +39,11 @@ struct Surface {
   std::vector<std::int32_t> face_nodes;
   std::vector<std::size_t> face_pos;
   bool binary = false;  // positions are reported as bytes, not lines
+  SurfaceRepair* repair = nullptr;  // reference geometry: drop / split bad faces (mesh_io.h)
 };
+
+// The most corners of a face the repair splits into a fan.
+constexpr int kMaxPolygon = 64;
 
 constexpr std::int64_t kMaxCount = std::numeric_limits<std::int32_t>::max() - 1;
 
@@ -105,21 +109,37 @@ class FaceCollector {
   // tmop has triangles and quadrilaterals only.
   void check_size(std::int64_t n, std::size_t pos) const {
     if (n < 3) fail(pos, "face has " + std::to_string(n) + " vertices, at least 3 are needed");
-    if (n > 4)
+    if (out_->repair && n > kMaxPolygon)
+      fail(pos, "face has " + std::to_string(n) + " vertices, more than " +
+                    std::to_string(kMaxPolygon) + " (a fan of them is no surface)");
+    if (n > 4 && !out_->repair)
       fail(pos, "face has " + std::to_string(n) +
                     " vertices; tmop reads triangles and quadrilaterals only");
   }
   // Checks that no corner repeats (a degenerate face; OpenMesh dropped such faces silently), then
   // adds the face.
+  // Repairing, a face with a repeated corner is dropped and one of more than 4 corners becomes
+  // a fan of triangles around its first corner (both counted).
   void add(const std::int32_t* nodes, int n, std::size_t pos) {
     check_size(n, pos);
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j)
-        if (nodes[i] == nodes[j])
+        if (nodes[i] == nodes[j]) {
+          if (out_->repair) {
+            ++out_->repair->dropped_degenerate;
+            return;
+          }
           fail(pos, "face uses vertex " + std::to_string(nodes[i] + index_base_) + " twice");
-    out_->face_nodes.insert(out_->face_nodes.end(), nodes, nodes + n);
-    out_->face_offsets.push_back(static_cast<std::int32_t>(out_->face_nodes.size()));
-    out_->face_pos.push_back(pos);
+        }
+    if (n > 4) {
+      ++out_->repair->split_polygons;
+      for (int k = 1; k + 1 < n; ++k) {
+        const std::int32_t tri[3] = {nodes[0], nodes[k], nodes[k + 1]};
+        push(tri, 3, pos);
+      }
+      return;
+    }
+    push(nodes, n, pos);
   }
   void set_index_base(int base) { index_base_ = base; }
   [[noreturn]] void fail(std::size_t pos, const std::string& what) const {
@@ -128,6 +148,11 @@ class FaceCollector {
   }
 
  private:
+  void push(const std::int32_t* nodes, int n, std::size_t pos) {
+    out_->face_nodes.insert(out_->face_nodes.end(), nodes, nodes + n);
+    out_->face_offsets.push_back(static_cast<std::int32_t>(out_->face_nodes.size()));
+    out_->face_pos.push_back(pos);
+  }
   const Scanner& s_;
   Surface* out_;
   int index_base_ = 0;  // how indices are numbered in messages: 1 in OBJ, 0 in OFF / PLY
@@ -280,7 +305,7 @@ void read_off(const Scanner& s, std::string_view data, Surface* out) {
     out->num_vertices = nv;
     bin.check_count_binary(static_cast<std::uint64_t>(nf), 16, "face");
     FaceCollector faces(s, out);
-    std::int32_t nodes[4];
+    std::int32_t nodes[kMaxPolygon];
     for (std::int32_t f = 0; f < nf; ++f) {
       const std::size_t at = bin.pos();
       const std::int32_t n = i32("face corner count");
@@ -339,7 +364,7 @@ void read_off(const Scanner& s, std::string_view data, Surface* out) {
   }
   out->num_vertices = nc[0];
   FaceCollector faces(s, out);
-  std::int32_t nodes[4];
+  std::int32_t nodes[kMaxPolygon];
   for (std::int64_t f = 0; f < nc[1]; ++f) {
     do {
       if (!lines.next(&b, &e))
@@ -649,10 +674,11 @@ void read_ply(const Scanner& s, std::string_view data, Surface* out) {
 }  // namespace
 
 void read_surface(const std::string& path, const std::string& ext, const std::string& data,
-                  Mesh* mesh) {
+                  Mesh* mesh, SurfaceRepair* repair) {
   Scanner s(path, data);
   if (s.at_end()) s.fail_at(0, "empty file");
   Surface surface;
+  surface.repair = repair;
   if (ext == "obj")
     read_obj(s, data, &surface);
   else if (ext == "off")
