@@ -39,7 +39,10 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
   const RecipeGeometry* geometry = nullptr;
   Status gs = resolve_recipe_geometry(*mesh, options.slide, options.boundary, options.geometry,
                                       &own, &geometry);
-  if (!gs.ok()) return gs;
+  if (!gs.ok()) {
+    result->before = measure_mesh(*mesh, options.rule);  // measured beside the mask below
+    return gs;
+  }
   const std::vector<double> original = mesh->coords;
   const int threads = options.solver.threads;
   // Vertices held fixed: the caller's, else the boundary (stage.h); the guard adds to them.
