@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <set>
 
@@ -192,6 +194,26 @@ TEST(BoundaryConstraints, ReferenceSurfaceFile) {
   EXPECT_EQ(on, bc->num_on_user_geometry());
   EXPECT_EQ(on, 80);
   walk_all(mesh, *bc, 0.03, 1e-14);
+
+  // The same sphere (a binary STL) with a degenerate facet added: the same constraints, and the
+  // summary says what was dropped.
+  std::ifstream in(geometry_data("cavity_sphere.stl"), std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GE(bytes.size(), 84u);
+  std::uint32_t count;
+  std::memcpy(&count, bytes.data() + 80, 4);
+  ++count;
+  std::memcpy(&bytes[80], &count, 4);
+  const float facet[12] = {0, 0, 1, 9, 9, 9, 9, 9, 9, 8, 9, 9};  // normal, corners 1 = 2
+  bytes.append(reinterpret_cast<const char*>(facet), sizeof facet);
+  bytes.append(2, '\0');  // attribute byte count
+  const std::string with_degenerate = ::testing::TempDir() + "cavity_sphere_degenerate.stl";
+  std::ofstream(with_degenerate, std::ios::binary) << bytes;
+  options.geometry = with_degenerate;
+  auto repaired = build(mesh, options);
+  EXPECT_EQ(repaired->num_on_user_geometry(), 80);
+  EXPECT_NE(repaired->summary().find("1 degenerate facets dropped"), std::string::npos)
+      << repaired->summary();
 }
 
 // Reference surfaces go through tmop's strict readers: a malformed file is one line naming

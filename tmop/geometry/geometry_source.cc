@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "tmop/geometry/cylinder_manifold.h"
@@ -87,7 +88,8 @@ Status load_geometry_source(const std::string& spec, GeometrySource* out,
   }
   std::vector<double> vertices;
   std::vector<std::int32_t> triangles;
-  const Status s = read_reference_surface(spec, &vertices, &triangles);
+  SurfaceRepair repair;
+  const Status s = read_reference_surface(spec, &vertices, &triangles, &repair);
   if (!s.ok()) {
     return Status::Failure(s.message() +
                            " (geometry: sphere:cx,cy,cz,r | plane:p,n | cylinder:p,d,r | FILE)");
@@ -111,6 +113,10 @@ Status load_geometry_source(const std::string& spec, GeometrySource* out,
   for (std::size_t v = 0; v + 2 < vertices.size(); v += 3) point(&vertices[v]);
   out->kind = GeometrySourceKind::kSurfaceFile;
   out->description = spec;
+  if (repair.dropped_degenerate > 0 || repair.split_polygons > 0)
+    out->description += " (" + std::to_string(repair.dropped_degenerate) +
+                        " degenerate facets dropped, " + std::to_string(repair.split_polygons) +
+                        " polygons split)";
   out->surface = std::make_unique<TriangleSurfaceManifold>(std::move(vertices), triangles);
   return Status::Ok();
 }
