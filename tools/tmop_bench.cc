@@ -62,6 +62,8 @@
 #include "tmop/recipes/recipe_result.h"
 #include "tmop/recipes/untangle.h"
 #include "tmop/target/target.h"
+#include "tools/bench/perturb.h"
+#include "tools/bench/record.h"
 #include "tools/parse_flags.h"
 #include "tools/print_error.h"
 
@@ -92,167 +94,13 @@ DEFINE_bool(keep_valid, true, "perturb: never invert an element (retry the move)
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using namespace tmop_bench;  // NOLINT: the record and perturbation helpers of this tool
 
 int fail(int code, const std::string& message) {
   tmop_tools::print_error("tmop_bench", message,
                           {FLAGS_input, FLAGS_output, FLAGS_reference, FLAGS_json});
   return code;
 }
-
-double cpu_seconds() {
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-double peak_rss_mb() {
-  rusage u;
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // kilobytes on Linux
-}
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\n");
-  const auto e = s.find_last_not_of(" \t\n");
-  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-}
-
-// The value after "key" and ':' in the first line of FILE that starts with key, or "".
-std::string proc_field(const char* file, const std::string& key) {
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line))
-    if (line.compare(0, key.size(), key) == 0) {
-      const auto colon = line.find(':');
-      if (colon != std::string::npos) return trim(line.substr(colon + 1));
-    }
-  return "";
-}
-
-std::string command_output(const std::string& command) {
-  std::string out;
-  if (FILE* p = popen(command.c_str(), "r")) {
-    char buf[256];
-    while (std::fgets(buf, sizeof buf, p)) out += buf;
-    pclose(p);
-  }
-  return trim(out);
-}
-
-// Short commit of the checkout this file was compiled from, "-dirty" when tmop/ has local
-// changes (the engine being measured is then not exactly the commit). It is read when the
-// program runs, so the record also carries the build time ("built"): a binary older than the
-// commit measures an older engine.
-std::string git_commit() {
-  std::string dir = __FILE__;
-  dir = dir.substr(0, dir.find_last_of('/'));
-  const std::string git = "git -C '" + dir + "' ";
-  std::string c = command_output(git + "rev-parse --short HEAD 2>/dev/null");
-  if (c.empty()) return "unknown";
-  if (!command_output(git + "status --porcelain --untracked-files=no -- ../tmop 2>/dev/null")
-           .empty())
-    c += "-dirty";
-  return c;
-}
-
-std::string utc_now() {
-  char buf[32];
-  const std::time_t t = std::time(nullptr);
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
-  return buf;
-}
-
-double load_average() {
-  std::ifstream in("/proc/loadavg");
-  double l = -1;
-  in >> l;
-  return l;
-}
-
-// A JSON object built field by field (keys in insertion order).
-class Json {
- public:
-  Json& num(const std::string& k, double v) { return raw(k, tmop::json_number(v)); }
-  Json& integer(const std::string& k, long long v) { return raw(k, std::to_string(v)); }
-  Json& str(const std::string& k, const std::string& v) { return raw(k, tmop::json_string(v)); }
-  Json& boolean(const std::string& k, bool v) { return raw(k, v ? "true" : "false"); }
-  Json& obj(const std::string& k, const Json& v) { return raw(k, v.text()); }
-  Json& nums(const std::string& k, const std::vector<double>& v) {
-    std::string s = "[";
-    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + tmop::json_number(v[i]);
-    return raw(k, s + "]");
-  }
-  Json& raw(const std::string& k, const std::string& v) {
-    fields_ += (fields_.empty() ? "" : ", ") + tmop::json_string(k) + ": " + v;
-    return *this;
-  }
-  std::string text() const { return "{" + fields_ + "}"; }
-
- private:
-  std::string fields_;
-};
-
-Json machine_json() {
-  Json m;
-  utsname u;
-  uname(&u);
-  m.integer("nproc", std::thread::hardware_concurrency())
-      .str("cpu", proc_field("/proc/cpuinfo", "model name"))
-      .num("memory_gb", std::atof(proc_field("/proc/meminfo", "MemTotal").c_str()) / 1048576.0)
-      .str("kernel", std::string(u.sysname) + " " + u.release);
-  return m;
-}
-
-Json mesh_json(const tmop::Mesh& mesh, const std::string& path) {
-  const std::vector<int> counts = mesh.count_by_type();
-  const int d = mesh.dim();
-  std::string types;
-  for (int t = 0; t < tmop::kNumCellTypes; ++t) {
-    const auto type = static_cast<tmop::CellType>(t);
-    if (counts[t] == 0 || tmop::cell_dim(type) != d) continue;
-    types += (types.empty() ? "" : "+") + std::string(tmop::cell_name(type));
-  }
-  Json j;
-  j.str("path", path)
-      .integer("elements", mesh.num_elements())
-      .integer("vertices", mesh.num_vertices())
-      .str("type", types)
-      .integer("dim", d);
-  return j;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-// Wall and CPU time of the measured parts of K runs.
-struct Timing {
-  std::vector<double> wall, cpu;
-  Clock::time_point t0;
-  double c0 = 0;
-  void start() {
-    c0 = cpu_seconds();
-    t0 = Clock::now();
-  }
-  void stop() {
-    wall.push_back(seconds_since(t0));
-    cpu.push_back(cpu_seconds() - c0);
-  }
-  void add_to(Json* j) const {
-    j->num("wall_seconds", median(wall))
-        .num("wall_seconds_min", wall.empty() ? 0 : *std::min_element(wall.begin(), wall.end()))
-        .num("cpu_seconds", median(cpu))
-        .nums("wall_seconds_all", wall);
-  }
-};
 
 // ---- the per-sample-point data shared by evaluate and floor ----------------------------------
 
@@ -356,90 +204,6 @@ bool floor_pass(const tmop::Mesh& mesh, const PointTable& pt, const tmop::Metric
   }
   *cost = 0.5 * sum;
   return true;
-}
-
-// ---- perturbation ------------------------------------------------------------------------------
-
-// splitmix64: a portable stream of 64-bit values (std distributions differ between libraries).
-struct Rng {
-  std::uint64_t s;
-  std::uint64_t next() {
-    std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return (next() >> 11) * (1.0 / 9007199254740992.0) * 2 - 1; }  // [-1, 1)
-};
-
-bool cell_valid(const tmop::Mesh& mesh, int c) {
-  const tmop::CellType type = mesh.cell_type(c);
-  const int d = mesh.space_dim, n = mesh.cell_size(c);
-  double xs[tmop::kMaxCellNodes * 3], A[9];
-  for (int i = 0; i < n; ++i)
-    for (int a = 0; a < d; ++a) xs[i * d + a] = mesh.vertex(mesh.cell(c)[i])[a];
-  for (const tmop::SamplePoint& sp : tmop::sample_points(type, tmop::SampleRule::kDefault)) {
-    tmop::cell_jacobian(type, xs, d, sp.xi, A);
-    const double det = d == 2 ? A[0] * A[3] - A[1] * A[2]
-                              : A[0] * (A[4] * A[8] - A[5] * A[7]) -
-                                    A[1] * (A[3] * A[8] - A[5] * A[6]) +
-                                    A[2] * (A[3] * A[7] - A[4] * A[6]);
-    if (!(det > 0)) return false;
-  }
-  return true;
-}
-
-void perturb(tmop::Mesh* mesh, double amount, std::uint64_t seed, bool keep_valid, int* moved) {
-  const int d = mesh->dim(), sd = mesh->space_dim, nv = mesh->num_vertices();
-  const std::vector<char> boundary = tmop::boundary_vertex_mask(*mesh);
-  const tmop::Adjacency adj = tmop::vertex_to_cells(*mesh);
-  std::vector<double> shortest(nv, std::numeric_limits<double>::infinity());
-  for (int c = 0; c < mesh->num_cells(); ++c) {
-    if (!mesh->is_element(c, d)) continue;
-    const tmop::CellInfo& info = tmop::cell_info(mesh->cell_type(c));
-    const std::int32_t* nodes = mesh->cell(c);
-    for (int e = 0; e < info.num_edges; ++e) {
-      const int a = nodes[info.edges[e][0]], b = nodes[info.edges[e][1]];
-      double l2 = 0;
-      for (int k = 0; k < sd; ++k) {
-        const double t = mesh->vertex(a)[k] - mesh->vertex(b)[k];
-        l2 += t * t;
-      }
-      const double l = std::sqrt(l2);
-      shortest[a] = std::min(shortest[a], l);
-      shortest[b] = std::min(shortest[b], l);
-    }
-  }
-  *moved = 0;
-  for (int v = 0; v < nv; ++v) {
-    if (boundary[v] || adj.offsets[v] == adj.offsets[v + 1] || !std::isfinite(shortest[v]))
-      continue;
-    Rng rng{seed * 1000003ULL + static_cast<std::uint64_t>(v)};
-    double* x = mesh->vertex(v);
-    double old[3] = {0, 0, 0};
-    for (int a = 0; a < sd; ++a) old[a] = x[a];
-    for (int attempt = 0; attempt < 20; ++attempt) {
-      double dir[3] = {0, 0, 0}, norm2 = 0;
-      do {  // uniform direction: rejection-sample the unit ball
-        norm2 = 0;
-        for (int a = 0; a < sd; ++a) {
-          dir[a] = rng.uniform();
-          norm2 += dir[a] * dir[a];
-        }
-      } while (norm2 > 1 || norm2 < 1e-6);
-      const double s = amount * shortest[v] / std::sqrt(norm2);
-      for (int a = 0; a < sd; ++a) x[a] = old[a] + s * dir[a];
-      bool ok = true;
-      if (keep_valid)
-        for (std::int64_t k = adj.offsets[v]; k < adj.offsets[v + 1] && ok; ++k)
-          ok = cell_valid(*mesh, adj.items[k]);
-      if (ok) {
-        ++*moved;
-        break;
-      }
-      for (int a = 0; a < sd; ++a) x[a] = old[a];
-    }
-  }
 }
 
 // ---- tasks -------------------------------------------------------------------------------------

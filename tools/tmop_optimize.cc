@@ -269,8 +269,9 @@ int main(int argc, char** argv) {
     return fail(2, "unknown --linear_solver '" + FLAGS_linear_solver + "'");
   if (opt.solver.method == SolverOptions::Method::kDogleg &&
       opt.solver.linear_solver == SolverOptions::LinearSolver::kCgnr)
-    return fail(2, "--solver=dogleg needs sparse Cholesky (Ceres's dogleg cannot use CGNR): use "
-                   "--linear_solver=auto or cholesky, or --solver=lm");
+    return fail(2,
+                "--solver=dogleg needs sparse Cholesky (Ceres's dogleg cannot use CGNR): use "
+                "--linear_solver=auto or cholesky, or --solver=lm");
   opt.solver.max_iterations = FLAGS_max_iterations;
   opt.solver.max_seconds = FLAGS_max_seconds;
   opt.solver.function_tolerance = FLAGS_function_tolerance;

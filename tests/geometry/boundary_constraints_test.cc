@@ -17,9 +17,9 @@
 #include "tmop/geometry/plane_manifold.h"
 #include "tmop/geometry/polyline_manifold.h"
 #include "tmop/geometry/reference_surface.h"
-#include "tmop/io/mesh_io.h"
 #include "tmop/geometry/sphere_manifold.h"
 #include "tmop/geometry/triangle_surface_manifold.h"
+#include "tmop/io/mesh_io.h"
 
 namespace tmop {
 namespace {
@@ -236,8 +236,7 @@ TEST(ReferenceSurface, MalformedFilesAreRefusedWithTheirPlaceAndQuadsAreSplit) {
   s = read_reference_surface(obj, &v, &t);
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find(obj + ":2"), std::string::npos) << s.message();
-  const std::string quad =
-      write("quad.obj", "v 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 2 3 4\n");
+  const std::string quad = write("quad.obj", "v 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 2 3 4\n");
   ASSERT_TRUE(read_reference_surface(quad, &v, &t).ok());
   EXPECT_EQ(v.size(), 12u);
   EXPECT_EQ(t, (std::vector<std::int32_t>{0, 1, 2, 0, 2, 3}));
@@ -258,10 +257,10 @@ TEST(ReferenceSurface, DegenerateFacetsAreDroppedAndPolygonsSplit) {
     return std::string("facet normal 0 0 1\nouter loop\nvertex ") + a + "\nvertex " + b +
            "\nvertex " + c + "\nendloop\nendfacet\n";
   };
-  const std::string stl = write(
-      "degenerate.stl", "solid s\n" + facet("0 0 0", "1 0 0", "0 1 0") +
-                            facet("5 5 5", "5 5 5", "6 5 5") + facet("1 0 0", "1 1 0", "0 1 0") +
-                            "endsolid s\n");
+  const std::string stl =
+      write("degenerate.stl", "solid s\n" + facet("0 0 0", "1 0 0", "0 1 0") +
+                                  facet("5 5 5", "5 5 5", "6 5 5") +
+                                  facet("1 0 0", "1 1 0", "0 1 0") + "endsolid s\n");
   Mesh strict;
   EXPECT_FALSE(read_mesh(stl, &strict).ok());
   std::vector<double> v;

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <random>
 
 #include "tests/optimize/grid_meshes.h"

@@ -222,8 +222,7 @@ void check_stl_writable(const Mesh& mesh, const WriteOptions& options) {
   }
 }
 
-void read_stl(const std::string& path, const std::string& data, Mesh* mesh,
-              SurfaceRepair* repair) {
+void read_stl(const std::string& path, const std::string& data, Mesh* mesh, SurfaceRepair* repair) {
   mesh->space_dim = 3;
   Scanner s(path, data);
   if (s.at_end()) s.fail_at(0, "empty file");

@@ -38,7 +38,7 @@ struct Surface {
   std::vector<std::int32_t> face_offsets{0};  // face f has nodes [offsets[f], offsets[f + 1])
   std::vector<std::int32_t> face_nodes;
   std::vector<std::size_t> face_pos;
-  bool binary = false;  // positions are reported as bytes, not lines
+  bool binary = false;              // positions are reported as bytes, not lines
   SurfaceRepair* repair = nullptr;  // reference geometry: drop / split bad faces (mesh_io.h)
 };
 

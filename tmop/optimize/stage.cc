@@ -514,11 +514,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                                       ? ceres::DOGLEG
                                       : ceres::LEVENBERG_MARQUARDT;
   const int free_coordinates = static_cast<int>(free_vertices.size()) * d;
-  bool cholesky = spec.solver.linear_solver == SolverOptions::LinearSolver::kSparseCholesky ||
-                  (spec.solver.linear_solver == SolverOptions::LinearSolver::kAuto &&
-                   (dogleg ||
-                    free_coordinates <= (d == 2 ? spec.solver.cholesky_max_free_coordinates_2d
-                                                : spec.solver.cholesky_max_free_coordinates_3d)));
+  bool cholesky =
+      spec.solver.linear_solver == SolverOptions::LinearSolver::kSparseCholesky ||
+      (spec.solver.linear_solver == SolverOptions::LinearSolver::kAuto &&
+       (dogleg || free_coordinates <= (d == 2 ? spec.solver.cholesky_max_free_coordinates_2d
+                                              : spec.solver.cholesky_max_free_coordinates_3d)));
   if (cholesky) {
     so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
     result->linear_solver = "sparse_normal_cholesky";
@@ -617,8 +617,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
         const double det_min = min_target_det(*mesh, point_cell, G[0], nullptr, frames);
         if (det_min > 0) break;
         const double energy = summary.final_cost;
-        const double sigma =
-            std::max(1 - energy / summary.initial_cost, spec.untangle_sigma_min);
+        const double sigma = std::max(1 - energy / summary.initial_cost, spec.untangle_sigma_min);
         const double mu = (1 - sigma) * UntangleMetric::chi(det_min, eps);
         eps = det_min < mu ? 2 * std::sqrt(mu * (mu - det_min)) : 1e-12;
         if (std::getenv("TMOP_DEBUG_EPS"))
