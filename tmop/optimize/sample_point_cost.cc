@@ -53,7 +53,7 @@ bool SamplePointCost::EvaluateFixed(double const* const* x, double* residuals,
     double dr[kMaxMetricResiduals * DD];
     double* r = residuals + row;
     if (!term.metric->residuals(T, r, jacobians ? dr : nullptr)) return false;
-    const double s = term.sqrt_weight * sqrt_multiplier_;
+    const double s = term.sqrt_weight;
     for (int k = 0; k < m; ++k) r[k] *= s;
     if (jacobians) {
       for (int k = 0; k < m; ++k)
@@ -134,7 +134,7 @@ bool SamplePointCost::Evaluate(double const* const* x_in, double* residuals,
     double dr[kMaxMetricResiduals * 9];
     double* r = residuals + row;
     if (!term.metric->residuals(T, r, jacobians ? dr : nullptr)) return false;
-    const double s = term.sqrt_weight * sqrt_multiplier_;
+    const double s = term.sqrt_weight;
     for (int k = 0; k < m; ++k) r[k] *= s;
     if (jacobians) {
       for (int i = 0; i < n; ++i) {
@@ -163,25 +163,6 @@ bool SamplePointCost::Evaluate(double const* const* x_in, double* residuals,
   }
   (void)m_total;
   return true;
-}
-
-void SamplePointCost::set_weight_multiplier(double m) { sqrt_multiplier_ = std::sqrt(m); }
-
-double SamplePointCost::value(double const* const* x_in) const {
-  const int d = dim_, n = num_nodes_;
-  double y[kMaxSurfaceNodes * 2];
-  const double* yp[kMaxSurfaceNodes];
-  double const* const* x = frame_ ? tangent_coordinates(x_in, y, yp) : x_in;
-  double sum = 0;
-  for (int t = 0; t < num_terms_; ++t) {
-    const SamplePointTerm& term = terms_[t];
-    double T[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    for (int i = 0; i < n; ++i)
-      for (int a = 0; a < d; ++a)
-        for (int b = 0; b < d; ++b) T[a * d + b] += x[i][a] * term.G[i * d + b];
-    sum += term.sqrt_weight * term.sqrt_weight * (term.metric->value(T) - term.metric->min_value());
-  }
-  return sum;
 }
 
 }  // namespace tmop

@@ -43,12 +43,8 @@ class SamplePointCost final : public ceres::CostFunction {
     guard_count_ = count;
   }
 
-  // Multiplies every term's weight by m >= 0 (the power-mean reweighting of stage.cc).
-  void set_weight_multiplier(double m);
   // Replaces term t's metric by one with the same residual count (the untangler's eps schedule).
   void set_metric(int t, const Metric* metric) { terms_[t].metric = metric; }
-  // Exact sum_t c_t mu_t at the given node coordinates (without the multiplier).
-  double value(double const* const* x) const;
 
  private:
   double const* const* tangent_coordinates(double const* const* x, double* y,
@@ -62,7 +58,6 @@ class SamplePointCost final : public ceres::CostFunction {
   const double* frame_ = nullptr;
   int num_terms_;
   SamplePointTerm terms_[kMaxTerms];
-  double sqrt_multiplier_ = 1.0;
   const double* guard_ = nullptr;
   int guard_count_ = 0;
 };

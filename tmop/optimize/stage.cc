@@ -22,6 +22,7 @@
 #include "tmop/metric/untangle.h"
 #include "tmop/optimize/g_table.h"
 #include "tmop/optimize/locality_order.h"
+#include "tmop/optimize/power_loss.h"
 #include "tmop/optimize/sample_measures.h"
 #include "tmop/optimize/sample_point_cost.h"
 #include "tmop/quality/parallel_for.h"
@@ -104,9 +105,16 @@ class StageCallback final : public ceres::IterationCallback {
       }
       // The metrics are dimensionless, so the decrease of the mean metric per element is too.
       // Two in a row, like the movement rule (one may follow a collapsed trust region).
-      // Reweighted rounds (power mean) scale the objective by the mean weight multiplier: the
-      // rule divides it out, so it means the same for every power.
-      const double decrease = 2 * s.cost_change / (std::max(1, num_elements_) * weight_scale_);
+      // A power objective (stage.h) decreases by phi'(v) = (1 + v/m)^(p-1) times the mean
+      // metric; the rule divides that out at the current point (v from the objective as if
+      // every point were alike: objective = (m/p)((1 + v/m)^p - 1)), so it means the same
+      // for every power.
+      double scale = 1.0;
+      if (power_scale_ > 0) {
+        const double p = spec_.power, objective = 2 * s.cost / std::max(1, num_elements_);
+        scale = std::pow(1 + p * std::max(0.0, objective) / power_scale_, (p - 1) / p);
+      }
+      const double decrease = 2 * s.cost_change / (std::max(1, num_elements_) * scale);
       small_decreases_ =
           !spec_.untangle && decrease < spec_.solver.objective_tolerance ? small_decreases_ + 1 : 0;
       if (small_decreases_ >= 2) {
@@ -118,8 +126,8 @@ class StageCallback final : public ceres::IterationCallback {
   }
 
   const std::string& reason() const { return reason_; }
-  // The mean weight multiplier of the current solve (1 without reweighting).
-  void set_weight_scale(double scale) { weight_scale_ = scale > 0 ? scale : 1.0; }
+  // The scale m of a power objective (0: the plain objective).
+  void set_power_scale(double m) { power_scale_ = m; }
 
  private:
   void save(std::vector<double>* out) const {
@@ -141,15 +149,16 @@ class StageCallback final : public ceres::IterationCallback {
   double initial_gradient_ = 0;
   int small_steps_ = 0;
   int small_decreases_ = 0;
-  double weight_scale_ = 1.0;
+  double power_scale_ = 0;
   std::string reason_;
 };
 
-// Exact mean of sum_t c_t mu_t over elements (weights of a cell's points sum to 1).
+// Exact mean of sum_t c_t mu_t over elements (weights of a cell's points sum to 1); with
+// `excess`, of sum_t c_t (mu_t - mu_t,min).
 double exact_objective(const Mesh& mesh, const StageSpec& spec, const std::vector<GTable>& G,
                        const std::vector<std::int32_t>& cells,
                        const std::vector<double>& point_weight, int num_elements,
-                       const Frames& frames) {
+                       const Frames& frames, bool excess = false) {
   const int d = mesh.dim();
   double sum = 0;
   for (std::size_t p = 0; p < cells.size(); ++p) {
@@ -160,7 +169,8 @@ double exact_objective(const Mesh& mesh, const StageSpec& spec, const std::vecto
       if (c_t == 0) continue;
       double T[9];
       compute_T(n, d, mesh, mesh.cell(c), G[t].at(p), T, frames.cell(c));
-      sum += point_weight[p] * c_t * spec.terms[t].metric->value(T);
+      const Metric& metric = *spec.terms[t].metric;
+      sum += point_weight[p] * c_t * (metric.value(T) - (excess ? metric.min_value() : 0.0));
     }
   }
   return sum / std::max(1, num_elements);
@@ -252,6 +262,10 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   }
   for (double x : mesh->coords)
     if (!std::isfinite(x)) return Status::Failure("the mesh has a non-finite coordinate");
+  if (!(std::isfinite(spec.power) && spec.power >= 1))
+    return Status::Failure("the power-mean order p must be finite and >= 1");
+  if (!(std::isfinite(spec.power_scale_fraction) && spec.power_scale_fraction > 0))
+    return Status::Failure("the power objective's scale fraction must be finite and > 0");
   if (!(spec.untangle_sigma_min > 0 && spec.untangle_sigma_min < 1))
     return Status::Failure("untangling: sigma_min must lie in (0, 1)");
   // Ceres's dogleg needs a factorisation: under kAuto it always gets sparse Cholesky (below).
@@ -414,16 +428,38 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   popts.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   popts.enable_fast_removal = false;
   popts.disable_all_safety_checks = true;
-  popts.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;  // BoundaryConstraints owns them
+  popts.manifold_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;       // BoundaryConstraints owns them
+  popts.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;  // `losses` below owns them
+  // A power objective (p > 1) puts each point's weight and power into a Ceres loss
+  // (power_loss.h): one per distinct point weight, shared by the blocks. Its scale m is a
+  // fraction of the input's mean excess per element (stage.h).
+  const bool powered = spec.power > 1 && !spec.untangle;
+  double power_scale = 1.0;
+  if (powered) {
+    const double m =
+        exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames, true);
+    if (std::isfinite(m) && m > 0) power_scale = spec.power_scale_fraction * m;  // else exact
+  }
+  result->power_scale = powered ? power_scale : 0.0;
+  std::deque<PowerLoss> losses;
+  std::unordered_map<double, PowerLoss*> loss_of_weight;
+  auto loss_for = [&](double w) -> ceres::LossFunction* {
+    if (!powered) return nullptr;
+    auto it = loss_of_weight.find(w);
+    if (it == loss_of_weight.end()) {
+      losses.emplace_back(spec.power, w, power_scale);
+      it = loss_of_weight.emplace(w, &losses.back()).first;
+    }
+    return it->second;
+  };
   ceres::Problem problem(popts);
   // Barrier stages sampled away from the corners guard the corners (SamplePointCost::set_guard).
   const bool guard = barrier && validity_rule(rule) != rule;
   std::deque<SamplePointCost> costs;
-  std::vector<int> cost_point;  // sample point of each cost
   // Blocks whose data coincide share one cost object (DESIGN.md section 9) - uniform targets
   // make that every block of a cell type and point - unless a block carries its own state: a
-  // surface frame, a corner guard, or the reweighting multiplier of a power mean.
-  const bool share = !surface && !guard && !(spec.power > 1);
+  // surface frame or a corner guard.
+  const bool share = !surface && !guard;
   std::unordered_map<CostKey, SamplePointCost*, CostKeyHash> shared_costs;
   std::vector<double*> blocks;
   std::vector<char> in_problem(mesh->num_vertices(), 0);
@@ -446,10 +482,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       if (c_t < 0 || !std::isfinite(c_t))
         return fail("trade-off weight of sample point " + std::to_string(p) +
                     " is negative or not finite");
-      // A term of zero weight still guards its barrier: residuals() is evaluated.
+      // A term of zero weight still guards its barrier: residuals() is evaluated. Under a
+      // power the point weight goes to the loss: w (sum_t c_t mu_t)^p.
       terms[nt].metric = spec.terms[t].metric.get();
       terms[nt].G = G[t].at(p);
-      terms[nt].sqrt_weight = std::sqrt(point_weight[p] * std::max(c_t, 0.0));
+      terms[nt].sqrt_weight = std::sqrt((powered ? 1.0 : point_weight[p]) * std::max(c_t, 0.0));
       ++nt;
     }
     blocks.clear();
@@ -468,10 +505,9 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       auto it = shared_costs.find(key);
       if (it == shared_costs.end()) {
         costs.emplace_back(n, d, nt, terms);
-        cost_point.push_back(static_cast<int>(p));
         it = shared_costs.emplace(key, &costs.back()).first;
       }
-      problem.AddResidualBlock(it->second, nullptr, blocks);
+      problem.AddResidualBlock(it->second, loss_for(point_weight[p]), blocks);
       continue;
     }
     costs.emplace_back(n, d, nt, terms);
@@ -480,8 +516,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       const std::vector<double>& g = table.G[static_cast<int>(mesh->cell_type(c))];
       costs.back().set_guard(g.data(), static_cast<int>(g.size()) / (n * d));
     }
-    cost_point.push_back(static_cast<int>(p));
-    problem.AddResidualBlock(&costs.back(), nullptr, blocks);
+    problem.AddResidualBlock(&costs.back(), loss_for(point_weight[p]), blocks);
   }
   std::vector<int> free_vertices;
   for (int v = 0; v < mesh->num_vertices(); ++v) {
@@ -546,6 +581,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   // iteration (30 % of an iteration at 100k tets, the same iterates; docs/benchmarks.md).
   so.jacobi_scaling = false;
   StageCallback callback(mesh, spec, table, frames, free_vertices, shortest, num_elements, result);
+  callback.set_power_scale(result->power_scale);
   so.callbacks.push_back(&callback);
 
   ceres::Solver::Summary summary;
@@ -558,7 +594,6 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     return summary.termination_type != ceres::FAILURE;
   };
   int untangle_rounds = 0;
-  std::vector<double> multiplier;  // power-mean reweighting, per cost (non-decreasing)
   // Surface meshes solve in rounds: the tangent frames are held fixed during a solve and
   // refreshed at the new positions after it. A barrier round is kept only if no cell is folded
   // in the refreshed frames, i.e. against the surface where the cell now lies: a long solve can
@@ -571,9 +606,9 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
               : 1;
   int round_cap = surface_rounds ? std::max(1, spec.surface_round_iterations) : 0;
   int surface_iterations = 0;
-  // The iteration budget of all rounds: max_iterations per reweighting round.
-  const int surface_budget =
-      spec.solver.max_iterations * (spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1);
+  // The iteration budget of all rounds. A power objective settles over more frame rounds
+  // (sphere of 16 x 32 triangles: worst quality 0.24 within max_iterations, 0.27 within 4x).
+  const int surface_budget = spec.solver.max_iterations * (powered ? 4 : 1);
   std::vector<double> round_start;
   for (int frame_round = 0; frame_round < frame_rounds; ++frame_round) {
     if (frame_round > 0) {
@@ -589,9 +624,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
         round_cap /= 2;
       } else if (surface_rounds &&
                  ((summary.termination_type != ceres::NO_CONVERGENCE &&
-                   (spec.power <= 1 ||
-                    (frame_round > spec.power_rounds &&
-                     summary.initial_cost - summary.final_cost < 1e-3 * summary.initial_cost))) ||
+                   summary.initial_cost - summary.final_cost < 1e-3 * summary.initial_cost) ||
                   surface_iterations >= surface_budget)) {
         break;  // converged (or out of iterations) in frames that are still valid
       }
@@ -625,48 +658,13 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                        mu, eps);
       }
     } else {
-      // Surface rounds carry the reweighting themselves: one solve per frame round, the weights
-      // refreshed with the frames (so both follow the cells), power_rounds of them at least.
-      const int rounds =
-          surface_rounds ? 1 : (spec.power > 1 ? 1 + std::max(0, spec.power_rounds) : 1);
-      std::vector<const double*> xs(kMaxCellNodes);
-      for (int round = 0; round < rounds; ++round) {
-        if (round > 0 || (surface_rounds && spec.power > 1 && frame_round > 0)) {
-          // Reweight: multiplier (v_k / mean v)^(p-1) from the current per-point values.
-          std::vector<double> v(costs.size());
-          double mean = 0;
-          for (std::size_t k = 0; k < costs.size(); ++k) {
-            const int c = point_cell[cost_point[k]];
-            for (int i = 0; i < mesh->cell_size(c); ++i) xs[i] = mesh->vertex(mesh->cell(c)[i]);
-            costs[k].set_weight_multiplier(1.0);
-            v[k] = std::max(0.0, costs[k].value(xs.data()));
-            mean += v[k] / costs.size();
-          }
-          if (!(mean > 0)) break;
-          // Weights never decrease: reweighting from the current values alone oscillates
-          // (elements that were bad are relieved, their neighbours pay, and so on: 10k
-          // triangles ended with a worst mean ratio of 0.66 against 0.84 for the plain mean).
-          multiplier.resize(costs.size(), 1.0);
-          double weighted = 0, total = 0;  // the objective's mean multiplier
-          for (std::size_t k = 0; k < costs.size(); ++k) {
-            multiplier[k] = std::max(multiplier[k], std::pow(1 + v[k] / mean, spec.power - 1));
-            costs[k].set_weight_multiplier(multiplier[k]);
-            weighted += point_weight[cost_point[k]] * multiplier[k];
-            total += point_weight[cost_point[k]];
-          }
-          callback.set_weight_scale(total > 0 ? weighted / total : 1.0);
-        }
-        // Rounds before the last only steer the weights: a loose solve is enough.
-        const bool last = round + 1 == rounds &&
-                          (!surface_rounds || spec.power <= 1 || frame_round >= spec.power_rounds);
-        so.max_num_iterations =
-            last ? spec.solver.max_iterations : std::min(spec.solver.max_iterations, 20);
-        if (surface_rounds) so.max_num_iterations = std::min(so.max_num_iterations, round_cap);
-        so.function_tolerance =
-            last ? spec.solver.function_tolerance : std::max(spec.solver.function_tolerance, 1e-4);
-        if (!solve()) return fail("solver failed: " + summary.message);
-        if (surface_rounds) surface_iterations += static_cast<int>(summary.iterations.size()) - 1;
-      }
+      // One solve (a power mean too: its loss keeps the exact model, power_loss.h); surface
+      // rounds cap it and go on in the next frame round.
+      so.max_num_iterations = spec.solver.max_iterations;
+      if (surface_rounds) so.max_num_iterations = std::min(so.max_num_iterations, round_cap);
+      so.function_tolerance = spec.solver.function_tolerance;
+      if (!solve()) return fail("solver failed: " + summary.message);
+      if (surface_rounds) surface_iterations += static_cast<int>(summary.iterations.size()) - 1;
     }
   }
 
