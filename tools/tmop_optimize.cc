@@ -83,14 +83,15 @@ DEFINE_string(size_field, "", "Point-data array of target edge lengths (--target
 DEFINE_string(sample_points, "default", "Sample rule: default, corners, nodes, centroid, gauss.");
 DEFINE_double(power, 0,
               "Power order p of the objective: 1 = plain mean; > 1 weights the worst elements "
-              "up (iteratively reweighted); 0 = the recipe's default (shape, auto, surface: 2; "
+              "up (one solve, a convex Ceres loss per point); 0 = the recipe's default (shape, "
+              "auto, surface: 2; "
               "size_adapt: 1).");
 DEFINE_string(solver, "lm",
               "Trust-region method: lm (Levenberg-Marquardt) or dogleg (always sparse Cholesky: "
               "slow on large 3D meshes).");
 DEFINE_string(linear_solver, "auto", "auto, cholesky (sparse normal Cholesky) or cgnr.");
 DEFINE_int32(max_iterations, 200,
-             "Maximum Ceres iterations per solve of a stage (shape stages: per reweighting "
+             "Maximum Ceres iterations per solve of a stage (surface meshes: per frame "
              "round; untangling: rounds of 5 iterations, up to 60 eps rounds).");
 DEFINE_double(max_seconds, 1e9, "Wall-clock limit per stage, seconds.");
 DEFINE_double(function_tolerance, 1e-5,

@@ -3,8 +3,8 @@
 // the ideal element's shape (equilateral triangle, square, regular tet, cube, right prism,
 // pyramid), whatever its size. Barrier metric by default, so a valid mesh stays valid.
 //
-// The objective is the power mean of order 2 of the shape metric (ShapeOptions::power; p = 1, the
-// plain mean, is one Ceres solve); the result
+// The objective is the power objective of order 2 of the shape metric (ShapeOptions::power,
+// StageSpec::power; p = 1 is the plain mean), one Ceres solve either way; the result
 // follows translation, scaling and rotation of the input (stage.h). Even so a mean can let the
 // worst element get worse while the average improves, so the recipe checks every cell afterwards
 // against the input's worst quality (the minimum tmop_quality prints: mean ratio for simplices,
@@ -35,10 +35,9 @@ struct ShapeOptions {
   SampleRule rule = SampleRule::kDefault;
   SampleSet extra_points;  // appended to the rule's points (see StageSpec::extra_points)
   // Power order p >= 1 (StageSpec::power); 0 = the default, 2. The plain mean (p = 1) is the
-  // fastest (one solve; 100k tets 2.6 s against 5.9 s) but lets the worst elements lag (100k
-  // tets: mean ratio min 0.36 vs 0.42, dihedral 11.7..160.8 vs 14.4..154.7 deg; lat-long sphere
-  // with valence-64 poles: min 0.13 vs 0.16), and with a sliding boundary it can leave the worst
-  // dihedral worse than a fixed boundary does.
+  // fastest (100k tets: 9 iterations against 14) but lets the worst elements lag (100k tets:
+  // mean ratio min 0.36 vs 0.44; lat-long sphere with valence-64 poles: min 0.13 vs 0.17), and
+  // with a sliding boundary it can leave the worst dihedral worse than a fixed boundary does.
   double power = 0;
   // Never return a mesh whose worst element is worse than the input's: no cell's headline
   // quality (mean ratio for simplices, scaled Jacobian for the other types) may end below the
