@@ -91,8 +91,9 @@ DEFINE_string(solver, "lm",
               "slow on large 3D meshes).");
 DEFINE_string(linear_solver, "auto", "auto, cholesky (sparse normal Cholesky) or cgnr.");
 DEFINE_int32(max_iterations, 200,
-             "Maximum Ceres iterations per solve of a stage (surface meshes: per frame "
-             "round; untangling: rounds of 5 iterations, up to 60 eps rounds).");
+             "Maximum Ceres iterations per solve of a stage (surface meshes: the budget of "
+             "all frame rounds, 4x under a power; untangling: rounds of 5 iterations, up to "
+             "60 eps rounds).");
 DEFINE_double(max_seconds, 1e9, "Wall-clock limit per stage, seconds.");
 DEFINE_double(function_tolerance, 1e-5,
               "A solve ends when an iteration lowers the objective by less than this fraction "

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <stdexcept>
 
@@ -152,6 +153,33 @@ TEST(PowerObjective, EachPowerMinimisesItsOwnObjective) {
   EXPECT_LT(*std::max_element(v2.begin(), v2.end()), *std::max_element(v1.begin(), v1.end()));
   std::printf("mean mu: p=1 %.6f, p=2 %.6f; worst mu: p=1 %.4f, p=2 %.4f\n", mean(v1), mean(v2),
               *std::max_element(v1.begin(), v1.end()), *std::max_element(v2.begin(), v2.end()));
+}
+
+// An extra sample point's weight goes into the loss: a bad one is refused with a message (the
+// loss would throw) and the mesh is left as it was.
+TEST(PowerObjective, RefusesABadExtraPointWeight) {
+  const int n = 3;
+  Mesh mesh = testing_grid::grid(CellType::kTet4, n);
+  std::mt19937 rng(3);
+  testing_grid::perturb(&mesh, n, 0.3, &rng);
+  const std::vector<double> before = mesh.coords;
+  int cell = 0;
+  while (!mesh.is_element(cell, 3)) ++cell;
+  for (double w : {-1.0, std::nan(""), HUGE_VAL}) {
+    StageSpec spec;
+    spec.power = 2;
+    spec.solver.threads = 1;
+    TermSpec term;
+    term.metric = std::shared_ptr<const Metric>(make_metric("shape_barrier_3d", 3).release());
+    spec.terms.push_back(term);
+    const double xi[3] = {0.25, 0.25, 0.25};
+    spec.extra_points.add(cell, xi, w);
+    StageResult result;
+    const Status s = optimize_stage(&mesh, spec, &result);
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.message().find("extra sample point 0"), std::string::npos) << s.message();
+    EXPECT_EQ(mesh.coords, before);
+  }
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #define TMOP_TESTS_RECIPES_RECIPE_TEST_MESHES_H_
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -36,7 +37,10 @@ inline bool have_gmsh() { return exit_code("gmsh --version > /dev/null 2>&1") ==
 // (Mesh.Algorithm = 8, "Frontal-Delaunay for quads", crashes gmsh 4.8.4 on size fields.)
 // Returns false when gmsh failed.
 inline bool graded_mesh(const std::string& dir, bool quads, Mesh* mesh) {
-  const std::string name = quads ? "graded_quads" : "graded_tris";
+  // Per process: ctest -j runs the tests that use this mesh at the same time (laplace_test and
+  // size_adapt_test read each other's half-written file once).
+  const std::string name =
+      std::string(quads ? "graded_quads_" : "graded_tris_") + std::to_string(::getpid());
   const std::string geo = dir + name + ".geo", msh = dir + name + ".msh";
   std::ofstream(geo) << "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0};\n"
                         "Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};\n"

@@ -1,6 +1,7 @@
 // tmop/optimize/power_loss.h
-// PowerLoss: the Ceres loss that turns a sample point's squared residual norm
-// s = |r|^2 = mu - mu_min (its metric's excess) into its term of the power objective of order p
+// PowerLoss: the Ceres loss that turns a sample point's squared residual norm s = |r|^2 (the
+// metric's excess mu - mu_min for metrics with exact residuals, Metric::exact_residuals; an
+// equivalent surrogate otherwise) into its term of the power objective of order p
 // (StageSpec::power):
 //   rho(s) = w (m / p) ((1 + s / m)^p - 1),   p >= 1, w >= 0 the point weight, m > 0 a scale.
 // rho'(s) = w (1 + s/m)^(p-1) >= w: a point at or below the scale counts as in the plain mean

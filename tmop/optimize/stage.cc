@@ -299,7 +299,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     if (c < 0 || c >= mesh->num_cells() || !mesh->is_element(c, d))
       return Status::Failure("extra sample point " + std::to_string(k) + ": cell " +
                              std::to_string(c) + " is not an element");
-    points.add(c, &spec.extra_points.xi[3 * k], spec.extra_points.weight[k]);
+    const double w = spec.extra_points.weight[k];
+    if (!(std::isfinite(w) && w >= 0))
+      return Status::Failure("extra sample point " + std::to_string(k) +
+                             ": its weight is negative or not finite");
+    points.add(c, &spec.extra_points.xi[3 * k], w);
   }
   const int num_elements = mesh->num_elements();
   const std::vector<std::int32_t>& point_cell = points.cell;
@@ -441,7 +445,9 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   if (powered) {
     const double m =
         exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames, true);
-    if (std::isfinite(m) && m > 0) power_scale = spec.power_scale_fraction * m;  // else exact
+    // An exact input (m = 0) has nothing to weigh: any positive scale will do, 1 is used.
+    const double scaled = spec.power_scale_fraction * m;
+    if (std::isfinite(scaled) && scaled > 0) power_scale = scaled;
   }
   result->power_scale = powered ? power_scale : 0.0;
   std::deque<PowerLoss> losses;
@@ -486,7 +492,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
         return fail("trade-off weight of sample point " + std::to_string(p) +
                     " is negative or not finite");
       // A term of zero weight still guards its barrier: residuals() is evaluated. Under a
-      // power the point weight goes to the loss: w (sum_t c_t mu_t)^p.
+      // power the point weight goes to the loss (PowerLoss: w phi(sum_t c_t |r_t|^2)).
       terms[nt].metric = spec.terms[t].metric.get();
       terms[nt].G = G[t].at(p);
       terms[nt].sqrt_weight = std::sqrt((powered ? 1.0 : point_weight[p]) * std::max(c_t, 0.0));
@@ -602,7 +608,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   // in the refreshed frames, i.e. against the surface where the cell now lies: a long solve can
   // carry cells across curved parts of the surface in frames that went stale (lat-long sphere
   // sliding on its own triangulation: 36 triangles folded inward). A round that folds is undone
-  // and redone with half the iterations; rounds end when a solve converges within its cap.
+  // and redone with half the iterations; rounds end when a solve converges within its cap
+  // (under a power: and lowered the objective by at most 0.1 %), or after the budget.
   const bool surface_rounds = surface && !spec.untangle;
   const int frame_rounds =
       surface ? std::max(1, surface_rounds ? spec.surface_max_rounds : spec.surface_frame_rounds)
@@ -625,10 +632,10 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
         }
         mesh->coords = round_start;  // where previous_frames were made: the same frames again
         round_cap /= 2;
-      } else if (surface_rounds &&
-                 ((summary.termination_type != ceres::NO_CONVERGENCE &&
-                   summary.initial_cost - summary.final_cost < 1e-3 * summary.initial_cost) ||
-                  surface_iterations >= surface_budget)) {
+      } else if (surface_rounds && ((summary.termination_type != ceres::NO_CONVERGENCE &&
+                                     (!powered || summary.initial_cost - summary.final_cost <=
+                                                      1e-3 * summary.initial_cost)) ||
+                                    surface_iterations >= surface_budget)) {
         break;  // converged (or out of iterations) in frames that are still valid
       }
     }

@@ -61,7 +61,8 @@ struct StageSpec {
   int surface_max_rounds = 40;
   SolverOptions solver;
   // Power order p >= 1: weight the worst points up. The objective is
-  //   sum_k w_k (m / p) ((1 + v_k / m)^p - 1),   v_k = sum_t c_t (mu_t - mu_t,min)
+  //   sum_k w_k (m / p) ((1 + v_k / m)^p - 1),   v_k = sum_t c_t |r_t|^2
+  // (|r_t|^2 = mu_t - mu_t,min for metrics with exact residuals, a surrogate otherwise)
   // (w_k the point weights, c_t the trade-offs, m = power_scale_fraction x the input's mean v
   // per element): the plain
   // mean for p = 1; for p > 1 points near or below m count as in the plain mean and points far
