@@ -156,14 +156,14 @@ class StageCallback final : public ceres::IterationCallback {
   std::string reason_;
 };
 
-// Exact mean of sum_t c_t mu_t over elements (weights of a cell's points sum to 1); with
-// `excess`, of sum_t c_t (mu_t - mu_t,min).
+// Exact mean of sum_t c_t mu_t over elements (weights of a cell's points sum to 1); in the
+// same pass, when `excess` is given, the mean of sum_t c_t (mu_t - mu_t,min).
 double exact_objective(const Mesh& mesh, const StageSpec& spec, const std::vector<GTable>& G,
                        const std::vector<std::int32_t>& cells,
                        const std::vector<double>& point_weight, int num_elements,
-                       const Frames& frames, bool excess = false) {
+                       const Frames& frames, double* excess = nullptr) {
   const int d = mesh.dim();
-  double sum = 0;
+  double sum = 0, sum_min = 0;
   for (std::size_t p = 0; p < cells.size(); ++p) {
     const int c = cells[p];
     const int n = mesh.cell_size(c);
@@ -173,9 +173,11 @@ double exact_objective(const Mesh& mesh, const StageSpec& spec, const std::vecto
       double T[9];
       compute_T(n, d, mesh, mesh.cell(c), G[t].at(p), T, frames.cell(c));
       const Metric& metric = *spec.terms[t].metric;
-      sum += point_weight[p] * c_t * (metric.value(T) - (excess ? metric.min_value() : 0.0));
+      sum += point_weight[p] * c_t * metric.value(T);
+      sum_min += point_weight[p] * c_t * metric.min_value();
     }
   }
+  if (excess) *excess = (sum - sum_min) / std::max(1, num_elements);
   return sum / std::max(1, num_elements);
 }
 
@@ -394,11 +396,12 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   const bool concurrent = spec.solver.threads != 1;
   IterationRecord before;
   std::vector<int> bad;
+  double initial_excess = 0;  // the power objective's scale comes from it (below)
   side_by_side(
       concurrent, [&] { before = measure(*mesh, table, frames); },
       [&] {
-        result->initial_objective =
-            exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames);
+        result->initial_objective = exact_objective(*mesh, spec, G, point_cell, point_weight,
+                                                    num_elements, frames, &initial_excess);
         result->min_det_before = min_target_det(*mesh, point_cell, G[0], &bad, frames);
       });
   result->inverted_before = before.inverted;
@@ -443,10 +446,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   const bool powered = spec.power > 1 && !spec.untangle;
   double power_scale = 1.0;
   if (powered) {
-    const double m =
-        exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames, true);
-    // An exact input (m = 0) has nothing to weigh: any positive scale will do, 1 is used.
-    const double scaled = spec.power_scale_fraction * m;
+    // An exact input (excess 0) has nothing to weigh: any positive scale will do, 1 is used.
+    const double scaled = spec.power_scale_fraction * initial_excess;
     if (std::isfinite(scaled) && scaled > 0) power_scale = scaled;
   }
   result->power_scale = powered ? power_scale : 0.0;

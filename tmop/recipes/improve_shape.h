@@ -36,8 +36,8 @@ struct ShapeOptions {
   SampleSet extra_points;  // appended to the rule's points (see StageSpec::extra_points)
   // Power order p >= 1 (StageSpec::power); 0 = the default, 2. The plain mean (p = 1) is the
   // fastest (100k tets: 9 iterations against 14) but lets the worst elements lag (100k tets:
-  // mean ratio min 0.36 vs 0.44; lat-long sphere with valence-64 poles: min 0.13 vs 0.17), and
-  // with a sliding boundary it can leave the worst dihedral worse than a fixed boundary does.
+  // mean ratio min 0.36 vs 0.44, docs/benchmarks.md), and with a sliding boundary it can leave
+  // the worst dihedral worse than a fixed boundary does.
   double power = 0;
   // Never return a mesh whose worst element is worse than the input's: no cell's headline
   // quality (mean ratio for simplices, scaled Jacobian for the other types) may end below the
