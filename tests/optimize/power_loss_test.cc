@@ -1,6 +1,7 @@
 // PowerLoss (the power objective's Ceres loss) and the stage's power objective: derivatives
-// against central differences, p = 1 is the plain mean, small arguments stay accurate, bad
-// parameters are refused, and a stage minimises exactly the objective stage.h states.
+// against central differences, the model cutoff changes only rho'', p = 1 is the plain mean, small
+// arguments stay accurate, bad parameters are refused, and a stage minimises exactly the objective
+// stage.h states.
 #include "tmop/optimize/power_loss.h"
 
 #include <gtest/gtest.h>
@@ -23,7 +24,7 @@ TEST(PowerLoss, DerivativesAgreeWithCentralDifferences) {
   for (double p : {1.0, 1.5, 2.0, 3.0, 4.5})
     for (double m : {1e-3, 0.25, 7.0})
       for (double s : {1e-4, 0.1, 1.0, 30.0}) {
-        const PowerLoss loss(p, 0.7, m);
+        const PowerLoss loss(p, 0.7, m, INFINITY);  // the exact rho'' everywhere
         double r[3], rp[3], rm[3];
         loss.Evaluate(s, r);
         const double h = 1e-6 * std::max(s, m);
@@ -36,6 +37,25 @@ TEST(PowerLoss, DerivativesAgreeWithCentralDifferences) {
         EXPECT_GE(r[1], 0.7 * (1 - 1e-15));  // every point counts at least as in the plain mean
         EXPECT_GE(r[2], 0.0);  // convex: Ceres applies its full second-order correction
       }
+}
+
+// Beyond s = cutoff x m only the model's curvature changes: rho and rho' are those of the exact
+// loss, rho'' is 0; below it all three are the exact loss's.
+TEST(PowerLoss, ModelCutoffDropsOnlyTheCurvatureFarOut) {
+  for (double p : {1.5, 2.0, 3.0})
+    for (double cutoff : {1.0, PowerLoss::kDefaultModelCutoff}) {
+      const PowerLoss exact(p, 0.7, 0.2, INFINITY), cut(p, 0.7, 0.2, cutoff);
+      EXPECT_EQ(cut.model_cutoff(), cutoff);
+      for (double t : {0.0, 0.5, 0.99, 1.01, 10.0, 49.0, 51.0, 1e4}) {
+        double re[3], rc[3];
+        exact.Evaluate(t * 0.2, re);
+        cut.Evaluate(t * 0.2, rc);
+        EXPECT_EQ(rc[0], re[0]);
+        EXPECT_EQ(rc[1], re[1]);
+        EXPECT_EQ(rc[2], t > cutoff ? 0.0 : re[2]) << "p " << p << " t " << t;
+      }
+    }
+  EXPECT_EQ(StageSpec().power_model_cutoff, PowerLoss::kDefaultModelCutoff);
 }
 
 TEST(PowerLoss, OrderOneIsThePlainMeanAndSmallArgumentsStayAccurate) {
@@ -64,6 +84,8 @@ TEST(PowerLoss, RefusesBadParameters) {
   EXPECT_THROW(PowerLoss(2, -1, 1), std::invalid_argument);
   EXPECT_THROW(PowerLoss(2, 1, 0), std::invalid_argument);
   EXPECT_THROW(PowerLoss(2, 1, INFINITY), std::invalid_argument);
+  EXPECT_THROW(PowerLoss(2, 1, 1, 0), std::invalid_argument);
+  EXPECT_THROW(PowerLoss(2, 1, 1, NAN), std::invalid_argument);
 }
 
 // Per-tet mu_303 of T = A W^-1 (one point per tet, W the regular tet: stage.cc's default).
@@ -153,6 +175,55 @@ TEST(PowerObjective, EachPowerMinimisesItsOwnObjective) {
   EXPECT_LT(*std::max_element(v2.begin(), v2.end()), *std::max_element(v1.begin(), v1.end()));
   std::printf("mean mu: p=1 %.6f, p=2 %.6f; worst mu: p=1 %.4f, p=2 %.4f\n", mean(v1), mean(v2),
               *std::max_element(v1.begin(), v1.end()), *std::max_element(v2.begin(), v2.end()));
+}
+
+// The model cutoff changes the path, not the objective: from a block whose worst tets start far
+// beyond the cutoff, the exact model, the default cutoff and an aggressive one reach the same
+// power objective and the same worst element.
+TEST(PowerObjective, ModelCutoffChangesTheStepsNotTheMinimiser) {
+  // A grid with strongly perturbed interior vertices: the first seed whose worst tet lies beyond
+  // the default cutoff, i.e. above 50 m = 12.5 x the mean (deterministic: std::mt19937).
+  const int n = 4;
+  Mesh input;
+  std::vector<double> v0;
+  for (unsigned seed = 1; seed <= 50; ++seed) {
+    input = testing_grid::grid(CellType::kTet4, n);
+    std::mt19937 rng(seed);
+    testing_grid::perturb(&input, n, 0.95, &rng);
+    v0 = tet_values(input);
+    if (*std::max_element(v0.begin(), v0.end()) > 2 * 12.5 * mean(v0)) break;
+  }
+  double objective[3], worst[3], scale = 0;
+  const double cutoffs[3] = {INFINITY, PowerLoss::kDefaultModelCutoff, 1.0};
+  for (int k = 0; k < 3; ++k) {
+    Mesh mesh = input;
+    StageSpec spec;
+    spec.power = 2;
+    spec.power_model_cutoff = cutoffs[k];
+    spec.solver.threads = 1;
+    spec.solver.objective_tolerance = 1e-12;
+    spec.solver.function_tolerance = 1e-14;
+    spec.solver.movement_tolerance = 1e-12;
+    spec.solver.gradient_tolerance = 1e-12;
+    TermSpec term;
+    term.metric = std::shared_ptr<const Metric>(make_metric("shape_barrier_3d", 3).release());
+    spec.terms.push_back(term);
+    StageResult result;
+    ASSERT_TRUE(optimize_stage(&mesh, spec, &result).ok());
+    EXPECT_EQ(result.inverted_after, 0);
+    scale = result.power_scale;
+    const std::vector<double> v = tet_values(mesh);
+    objective[k] = power_objective(v, 2, scale);
+    worst[k] = *std::max_element(v.begin(), v.end());
+    std::printf("cutoff %g: %d iterations, power objective %.10f, worst mu %.6f\n", cutoffs[k],
+                result.iterations, objective[k], worst[k]);
+  }
+  // The input reaches beyond the default cutoff, so the cutoff is exercised.
+  EXPECT_GT(*std::max_element(v0.begin(), v0.end()), PowerLoss::kDefaultModelCutoff * scale);
+  for (int k = 1; k < 3; ++k) {
+    EXPECT_NEAR(objective[k], objective[0], 1e-7 * objective[0]);
+    EXPECT_NEAR(worst[k], worst[0], 1e-4 * worst[0]);
+  }
 }
 
 // An extra sample point's weight goes into the loss: a bad one is refused with a message (the

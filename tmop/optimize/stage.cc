@@ -271,6 +271,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     return Status::Failure("the power-mean order p must be finite and >= 1");
   if (!(std::isfinite(spec.power_scale_fraction) && spec.power_scale_fraction > 0))
     return Status::Failure("the power objective's scale fraction must be finite and > 0");
+  if (!(spec.power_model_cutoff > 0))
+    return Status::Failure("the power objective's model cutoff must be > 0");
   if (!(spec.untangle_sigma_min > 0 && spec.untangle_sigma_min < 1))
     return Status::Failure("untangling: sigma_min must lie in (0, 1)");
   // Ceres's dogleg needs a factorisation: under kAuto it always gets sparse Cholesky (below).
@@ -457,7 +459,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     if (!powered) return nullptr;
     auto it = loss_of_weight.find(w);
     if (it == loss_of_weight.end()) {
-      losses.emplace_back(spec.power, w, power_scale);
+      losses.emplace_back(spec.power, w, power_scale, spec.power_model_cutoff);
       it = loss_of_weight.emplace(w, &losses.back()).first;
     }
     return it->second;

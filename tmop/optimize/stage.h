@@ -76,6 +76,11 @@ struct StageSpec {
   // the scale that matters). 0.25 measured against 1 and 0.5 (docs/benchmarks.md): part 100k
   // worst mean ratio 0.430 / 0.437 / 0.443, mean 0.850 / 0.849 / 0.847; quad sphere 0.21 at 1.
   double power_scale_fraction = 0.25;
+  // Beyond v_k = power_model_cutoff x m a point's Gauss-Newton model drops the power's
+  // curvature (PowerLoss::model_cutoff): the objective and gradient are unchanged, the worst
+  // elements take longer steps (part 100k tets, p = 2: 14 -> 9 iterations, the same result).
+  // +infinity keeps the exact model everywhere. <= 0 or NaN: fails.
+  double power_model_cutoff = 50;  // PowerLoss::kDefaultModelCutoff (50 vs 10 / 30 / 100 / 1000)
 
   // Untangling schedule (DESIGN.md section 7). When true, terms[0].metric must be an
   // UntangleMetric (metric/untangle.h); the stage solves repeatedly, lowering its eps between
