@@ -82,6 +82,9 @@ DEFINE_string(solver, "lm", "lm or dogleg.");
 DEFINE_int32(cholesky_max_free_coordinates, -1,
              "auto picks sparse Cholesky up to this many free coordinates in 3D (-1: the library's "
              "default, SolverOptions::cholesky_max_free_coordinates_3d).");
+DEFINE_int32(cgnr_max_iterations, 0,
+             "CGNR inner iterations per step, for 2D and 3D meshes alike (0: the library's "
+             "defaults, SolverOptions::cgnr_max_iterations_2d / _3d).");
 DEFINE_double(power, 0,
               "Shape: power order of the objective (0: the recipe's default, 2; 1: plain mean).");
 DEFINE_double(function_tolerance, -1,
@@ -262,6 +265,8 @@ tmop::SolverOptions solver_options(const Context& ctx) {
   if (FLAGS_cholesky_max_free_coordinates >= 0)
     so.cholesky_max_free_coordinates_3d = FLAGS_cholesky_max_free_coordinates;
   if (FLAGS_function_tolerance >= 0) so.function_tolerance = FLAGS_function_tolerance;
+  if (FLAGS_cgnr_max_iterations > 0)
+    so.cgnr_max_iterations_2d = so.cgnr_max_iterations_3d = FLAGS_cgnr_max_iterations;
   return so;
 }
 

@@ -572,7 +572,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   } else {
     so.linear_solver_type = ceres::CGNR;
     so.preconditioner_type = ceres::JACOBI;
-    so.max_linear_solver_iterations = spec.solver.cgnr_max_iterations;
+    so.max_linear_solver_iterations =
+        d == 2 ? spec.solver.cgnr_max_iterations_2d : spec.solver.cgnr_max_iterations_3d;
     result->linear_solver = "cgnr_jacobi";
   }
   so.use_nonmonotonic_steps = spec.solver.nonmonotonic_steps;
