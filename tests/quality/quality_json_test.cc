@@ -93,6 +93,19 @@ TEST(QualityJson, NumbersReadBackExactly) {
   EXPECT_EQ(std::strtod(edge_mean.c_str(), nullptr), r.edge_length.mean);
 }
 
+// tmop_optimize keeps only the summaries of its before/after reports: the JSON must not change.
+TEST(QualityJson, ReleasingPerCellValuesKeepsTheJson) {
+  QualityReport r = compute_quality(testing_meshes::tet_block(3, 0.3));
+  const std::string json = quality_json(r);
+  ASSERT_FALSE(r.mean_ratio.values.empty());
+  r.release_per_cell_values();
+  for (const QualityMeasure* m : r.measures()) EXPECT_TRUE(m->values.empty()) << m->key;
+  EXPECT_TRUE(r.inverted.empty());
+  EXPECT_TRUE(r.certified.empty());
+  EXPECT_TRUE(r.all_boundary.empty());
+  EXPECT_EQ(quality_json(r), json);
+}
+
 TEST(QualityJson, MeasuresThatDoNotApplyAreNull) {
   const std::string json = quality_json(compute_quality(testing_meshes::tri_grid(2, 0.1)));
   EXPECT_EQ(value_of(json, "dihedral_deg"), "null");

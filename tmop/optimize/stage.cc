@@ -390,6 +390,9 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       builder.add(block, n * d);
     }
   }
+  // The points' reference coordinates live on in G only: released before Ceres allocates
+  // (24 MB at 1M tets).
+  std::vector<double>().swap(points.xi);
 
   // Validity (inverted counts, the barrier's start check) is judged at points that include
   // every corner, whatever the stage samples (validity_rule).
@@ -478,7 +481,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   // Residual blocks in space-filling-curve order of their cells: Ceres numbers the parameter
   // blocks by first appearance, so neighbouring blocks touch neighbouring columns of J and the
   // products of its CGNR stay in cache (docs/benchmarks.md).
-  const std::vector<std::int32_t> order = locality_order(*mesh, point_cell);
+  std::vector<std::int32_t> order = locality_order(*mesh, point_cell);
   for (const std::int32_t pi : order) {
     const std::size_t p = static_cast<std::size_t>(pi);
     const int c = point_cell[p];
@@ -530,6 +533,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     }
     problem.AddResidualBlock(&costs.back(), loss_for(point_weight[p]), blocks);
   }
+  std::vector<std::int32_t>().swap(order);  // 4 MB at 1M tets, not needed by the solve
   std::vector<int> free_vertices;
   for (int v = 0; v < mesh->num_vertices(); ++v) {
     if (!in_problem[v]) continue;

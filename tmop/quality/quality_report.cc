@@ -36,6 +36,15 @@ void init(QualityMeasure* m, const char* key, const char* label, const char* ide
 
 }  // namespace
 
+void QualityReport::release_per_cell_values() {
+  // measures() is the one list of the measures; this report is not const, so neither are they.
+  for (const QualityMeasure* m : measures())
+    std::vector<double>().swap(const_cast<QualityMeasure*>(m)->values);
+  std::vector<std::uint8_t>().swap(inverted);
+  std::vector<double>().swap(certified);
+  std::vector<double>().swap(all_boundary);
+}
+
 std::vector<const QualityMeasure*> QualityReport::measures() const {
   return {&mean_ratio,      &scaled_jacobian, &condition_number, &min_det,
           &min_angle,       &max_angle,       &min_dihedral,     &max_dihedral,

@@ -79,6 +79,11 @@ struct QualityReport {
 
   // The measures above in report order (for JSON, summaries, fields, plots).
   std::vector<const QualityMeasure*> measures() const;
+
+  // Frees the per-cell arrays (each measure's values, inverted, certified, all_boundary) and
+  // keeps everything the JSON and text summaries use (counts, min / mean / max, histograms,
+  // examples): a report kept while the mesh is optimized costs ~100 MB at 1M tets otherwise.
+  void release_per_cell_values();
 };
 
 QualityReport compute_quality(const Mesh& mesh, const QualityOptions& options = {});
