@@ -130,6 +130,21 @@ double power_objective(const std::vector<double>& v, double p, double m) {
   return s / v.size();
 }
 
+// A mu_303 shape stage of power p run to tight convergence on one thread.
+StageSpec converging_shape_spec(double p) {
+  StageSpec spec;
+  spec.power = p;
+  spec.solver.threads = 1;
+  spec.solver.objective_tolerance = 1e-12;
+  spec.solver.function_tolerance = 1e-14;
+  spec.solver.movement_tolerance = 1e-12;
+  spec.solver.gradient_tolerance = 1e-12;
+  TermSpec term;
+  term.metric = std::shared_ptr<const Metric>(make_metric("shape_barrier_3d", 3).release());
+  spec.terms.push_back(term);
+  return spec;
+}
+
 // Each stage minimises its own objective: the p = 2 result has the lower power objective, the
 // p = 1 result the lower mean, and the scale is the stated fraction of the input's mean.
 TEST(PowerObjective, EachPowerMinimisesItsOwnObjective) {
@@ -148,16 +163,7 @@ TEST(PowerObjective, EachPowerMinimisesItsOwnObjective) {
   Mesh results[2] = {input, input};
   double scale = 0;
   for (int k = 0; k < 2; ++k) {
-    StageSpec spec;
-    spec.power = k == 0 ? 1.0 : 2.0;
-    spec.solver.threads = 1;
-    spec.solver.objective_tolerance = 1e-12;
-    spec.solver.function_tolerance = 1e-14;
-    spec.solver.movement_tolerance = 1e-12;
-    spec.solver.gradient_tolerance = 1e-12;
-    TermSpec term;
-    term.metric = std::shared_ptr<const Metric>(make_metric("shape_barrier_3d", 3).release());
-    spec.terms.push_back(term);
+    StageSpec spec = converging_shape_spec(k == 0 ? 1.0 : 2.0);
     StageResult result;
     ASSERT_TRUE(optimize_stage(&results[k], spec, &result).ok());
     EXPECT_EQ(result.inverted_after, 0);
@@ -197,17 +203,8 @@ TEST(PowerObjective, ModelCutoffChangesTheStepsNotTheMinimiser) {
   const double cutoffs[3] = {INFINITY, PowerLoss::kDefaultModelCutoff, 1.0};
   for (int k = 0; k < 3; ++k) {
     Mesh mesh = input;
-    StageSpec spec;
-    spec.power = 2;
+    StageSpec spec = converging_shape_spec(2.0);
     spec.power_model_cutoff = cutoffs[k];
-    spec.solver.threads = 1;
-    spec.solver.objective_tolerance = 1e-12;
-    spec.solver.function_tolerance = 1e-14;
-    spec.solver.movement_tolerance = 1e-12;
-    spec.solver.gradient_tolerance = 1e-12;
-    TermSpec term;
-    term.metric = std::shared_ptr<const Metric>(make_metric("shape_barrier_3d", 3).release());
-    spec.terms.push_back(term);
     StageResult result;
     ASSERT_TRUE(optimize_stage(&mesh, spec, &result).ok());
     EXPECT_EQ(result.inverted_after, 0);
