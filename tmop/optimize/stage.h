@@ -80,7 +80,7 @@ struct StageSpec {
   // curvature (PowerLoss::model_cutoff): the objective and gradient are unchanged, the worst
   // elements take longer steps (part 100k tets, p = 2: 14 -> 9 iterations, the same result).
   // +infinity keeps the exact model everywhere. <= 0 or NaN: fails.
-  double power_model_cutoff = 50;  // PowerLoss::kDefaultModelCutoff (50 vs 10 / 30 / 100 / 1000)
+  double power_model_cutoff = 50;  // PowerLoss::kDefaultModelCutoff (50 vs 10 / 30 / 100)
 
   // Untangling schedule (DESIGN.md section 7). When true, terms[0].metric must be an
   // UntangleMetric (metric/untangle.h); the stage solves repeatedly, lowering its eps between
