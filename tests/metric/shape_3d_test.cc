@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "tests/metric/metric_test_util.h"
 #include "tmop/metric/small_matrix.h"
@@ -58,6 +60,27 @@ TEST(SmallMatrix, DeterminantAndCofactorMatchEigen) {
       EXPECT_LT((C - det * Mat(T.inverse().transpose())).norm(), 1e-12);
     }
   }
+}
+
+// x^(-1/3) without a division: within a few ulp of 1/cbrt(x) over the range the metrics see
+// (tau from 1e-30 to 1e30, every mantissa), and the fallback outside it (subnormal, huge, inf).
+TEST(SmallMatrix, InverseCubeRootIsAccurateEverywhere) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> exponent(-690.0, 690.0);
+  double worst = 0.0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    const double x = std::exp(exponent(rng));
+    const long double exact = 1.0L / std::cbrt(static_cast<long double>(x));
+    const double got = small_matrix::inv_cbrt_positive(x);
+    worst = std::max(worst, static_cast<double>(std::fabs((got - exact) / exact)));
+  }
+  EXPECT_LT(worst, 4e-16);
+  for (const double x : {1.0, 8.0, 0.125, 27.0, 1e-300, 1e300, 1e-310, 4.9e-324, 1.7e308}) {
+    const long double exact = 1.0L / std::cbrt(static_cast<long double>(x));
+    EXPECT_NEAR(small_matrix::inv_cbrt_positive(x) / exact, 1.0, 4e-16) << x;
+  }
+  EXPECT_EQ(small_matrix::inv_cbrt_positive(8.0), 0.5);
+  EXPECT_EQ(small_matrix::inv_cbrt_positive(HUGE_VAL), 0.0);
 }
 
 TEST(SmallMatrix, CofactorDerivativeMatchesCentralDifferences) {
@@ -320,7 +343,7 @@ TEST(DeviatoricShape, FiveResidualsWhoseSquaredNormIsMu) {
 }
 
 // Near the minimiser the published formulas cancel (mu = |T|^2 / (3 tau^(2/3)) - 1 loses all
-// digits of mu below 1e-16); the rewritten ones keep mu to a few ulps.
+// digits of mu below 1e-16); the rewritten ones keep mu, and |r|^2, to a few ulps.
 TEST(DeviatoricShape, MuIsAccurateNearTheMinimiser) {
   std::mt19937 rng(21);
   for (const PolarForm& f : kPolarForms) {
@@ -335,6 +358,11 @@ TEST(DeviatoricShape, MuIsAccurateNearTheMinimiser) {
       // an absolute error ~1e-16, i.e. 1 % of mu; the tolerances are the reference's own error.
       const double tol = eps > 1e-4 ? 1e-10 : (eps > 1e-6 ? 1e-7 : 1e-4);
       EXPECT_NEAR(v / static_cast<double>(exact), 1.0, tol) << m->name() << " eps " << eps;
+      // The residuals the solver sees are as accurate as the reported value.
+      Eigen::VectorXd r;
+      ASSERT_TRUE(eval(*m, T, &r, nullptr));
+      EXPECT_NEAR(r.squaredNorm() / static_cast<double>(exact), 1.0, tol)
+          << m->name() << " eps " << eps;
     }
   }
 }

@@ -55,6 +55,98 @@ bool conformal_residual(const double* X, double* F, double* J) {
   return true;
 }
 
+// The deviatoric residuals of mu_303 (Mu303 = true) and mu_304 in one regime, for every T with
+// tau > 0. For these two metrics mu = rho |w|^2 never cancels: with s = |w|^2 = |D|^2 and
+// e = det D, rho carries f / 6 - e / s, and e / s <= f / 9 because M = D + (f / 3) I >= 0, so
+// f / 6 - e / s >= f / 18 (mu_301 and mu_302 carry f - 9 e / s, which does cancel on needles:
+// they keep the two-regime path below). Straight-line code: one division-free cube root, three
+// independent divisions and one square root for mu_303.
+//   r = alpha w, alpha = sqrt(rho); dr/dT = dw/dT (alpha T) + w u^t, u = (alpha / 2) d ln rho / dT
+//   d ln rho / dT = ca T - cb d(e/s)/dT - cc K,  d(e/s)/dT = (2 / s) T (dev cof D - 2 (e/s) D),
+// so u = T Y - (alpha / 2) cc K with Y symmetric (alpha / 2) (ca I - (2 cb / s) (dev cof D -
+// 2 (e/s) D)).
+template <bool Mu303>
+bool deviatoric_303_304(const double* T, double* r, double* dr_dT) {
+  double K[9];
+  small_matrix::cofactor<3>(T, K);
+  const double tau = small_matrix::det_from_cofactor<3>(T, K);
+  if (!(tau > 0.0) || !std::isfinite(tau)) return false;
+  // M = T^t T (upper triangle), f = tr M, D = M - (f / 3) I.
+  double M00 = 0, M01 = 0, M02 = 0, M11 = 0, M12 = 0, M22 = 0;
+  for (int a = 0; a < 3; ++a) {
+    const double t0 = T[3 * a], t1 = T[3 * a + 1], t2 = T[3 * a + 2];
+    M00 += t0 * t0;
+    M01 += t0 * t1;
+    M02 += t0 * t2;
+    M11 += t1 * t1;
+    M12 += t1 * t2;
+    M22 += t2 * t2;
+  }
+  const double f = M00 + M11 + M22, m3 = f / 3.0;
+  const double D00 = M00 - m3, D11 = M11 - m3, D22 = M22 - m3;
+  const double w[5] = {kInvSqrt2 * (M00 - M11), kInvSqrt6 * (M00 + M11 - 2.0 * M22), kSqrt2 * M01,
+                       kSqrt2 * M02, kSqrt2 * M12};
+  const double s = w[0] * w[0] + w[1] * w[1] + w[2] * w[2] + w[3] * w[3] + w[4] * w[4];
+  // cof D (symmetric) and det D by its first row.
+  const double c00 = D11 * D22 - M12 * M12, c11 = D00 * D22 - M02 * M02,
+               c22 = D00 * D11 - M01 * M01;
+  const double c01 = M12 * M02 - M01 * D22, c02 = M01 * M12 - D11 * M02,
+               c12 = M01 * M02 - D00 * M12;
+  const double e = D00 * c00 + M01 * c01 + M02 * c02;
+  // Below s = 1e-30 f^2, e / s and its gradient's contribution w u^t are below rounding.
+  const bool deviates = s > 1e-30 * f * f;
+  const double is = deviates ? 1.0 / s : 0.0;
+  const double dl = e * is, num = f / 6.0 - dl;
+  double rho, ca, cc, it;
+  if constexpr (Mu303) {
+    const double z = small_matrix::inv_cbrt_positive(tau);  // tau^(-1/3)
+    const double q2 = tau * z, P = f * f + 3.0 * f * q2 + 9.0 * q2 * q2, iP = 1.0 / P;
+    it = z * z * z;
+    rho = 9.0 * num * (z * z) * iP;
+    ca = -2.0 * (2.0 * f + 3.0 * q2) * iP;
+    cc = (2.0 / 3.0) * it * (1.0 + (3.0 * f + 18.0 * q2) * q2 * iP);
+  } else {
+    const double sf = std::sqrt(f), iQ = 1.0 / (f * sf + 3.0 * kSqrt3 * tau);
+    it = 1.0 / tau;
+    rho = 3.0 * kSqrt3 * num * it * iQ;
+    ca = -3.0 * sf * iQ;
+    cc = it + 3.0 * kSqrt3 * iQ;
+  }
+  if (!(rho > 0.0) || !std::isfinite(rho) || !std::isfinite(s)) return false;
+  const double alpha = std::sqrt(rho);
+  for (int j = 0; j < 5; ++j) r[j] = alpha * w[j];
+  if (dr_dT == nullptr) return true;
+  const double inum = 1.0 / num, h = 0.5 * alpha;
+  // Y = h (ca + inum / 3) I - h inum (2 / s) X, X = dev cof D - 2 (e/s) D.
+  const double g = -2.0 * h * inum * is, t3 = (c00 + c11 + c22) / 3.0, dl2 = 2.0 * dl;
+  const double yd = h * (ca + inum / 3.0);
+  const double Y00 = yd + g * (c00 - t3 - dl2 * D00), Y11 = yd + g * (c11 - t3 - dl2 * D11),
+               Y22 = yd + g * (c22 - t3 - dl2 * D22);
+  const double Y01 = g * (c01 - dl2 * M01), Y02 = g * (c02 - dl2 * M02),
+               Y12 = g * (c12 - dl2 * M12);
+  const double hc = h * cc, as2 = alpha * kSqrt2, as6 = alpha * 2.0 * kInvSqrt6;
+  for (int a = 0; a < 3; ++a) {
+    const int i0 = 3 * a, i1 = i0 + 1, i2 = i0 + 2;
+    const double t0 = T[i0], t1 = T[i1], t2 = T[i2];
+    const double u0 = t0 * Y00 + t1 * Y01 + t2 * Y02 - hc * K[i0];
+    const double u1 = t0 * Y01 + t1 * Y11 + t2 * Y12 - hc * K[i1];
+    const double u2 = t0 * Y02 + t1 * Y12 + t2 * Y22 - hc * K[i2];
+    const double p0 = as2 * t0, p1 = as2 * t1, p2 = as2 * t2;
+    const double v0 = as6 * t0, v1 = as6 * t1, v2 = as6 * t2;
+    double* d0 = dr_dT;       // w0 = (M00 - M11) / sqrt2
+    double* d1 = dr_dT + 9;   // w1 = (M00 + M11 - 2 M22) / sqrt6
+    double* d2 = dr_dT + 18;  // w2 = sqrt2 M01
+    double* d3 = dr_dT + 27;  // w3 = sqrt2 M02
+    double* d4 = dr_dT + 36;  // w4 = sqrt2 M12
+    d0[i0] = p0 + w[0] * u0, d0[i1] = -p1 + w[0] * u1, d0[i2] = w[0] * u2;
+    d1[i0] = v0 + w[1] * u0, d1[i1] = v1 + w[1] * u1, d1[i2] = -2.0 * v2 + w[1] * u2;
+    d2[i0] = p1 + w[2] * u0, d2[i1] = p0 + w[2] * u1, d2[i2] = w[2] * u2;
+    d3[i0] = p2 + w[3] * u0, d3[i1] = w[3] * u1, d3[i2] = p0 + w[3] * u2;
+    d4[i0] = w[4] * u0, d4[i1] = p2 + w[4] * u1, d4[i2] = p1 + w[4] * u2;
+  }
+  return true;
+}
+
 class BarrierShapeMetric final : public FixedMetric {
  public:
   BarrierShapeMetric(Shape3dForm form, const char* name, const char* alias, double c2,
@@ -329,6 +421,8 @@ class BarrierShapeMetric final : public FixedMetric {
   // n = w / |w|; near it alpha = sqrt(rho) and dr/dT = alpha dw/dT + w (d rho/dT)^t / (2 alpha),
   // with no division by |w| (at w = 0 exactly, r = 0 and dr/dT = alpha dw/dT).
   bool deviatoric_residuals(const double* T, double* r, double* dr_dT) const {
+    if (form_ == Shape3dForm::kBarrier) return deviatoric_303_304<true>(T, r, dr_dT);
+    if (form_ == Shape3dForm::kCubicBarrier) return deviatoric_303_304<false>(T, r, dr_dT);
     Invariants in;
     if (!in.compute(T, form_ == Shape3dForm::kBarrier)) return false;
     const double p = published_mu(in);

@@ -25,7 +25,11 @@
 //     of 9 x 12: less memory and fewer flops in every CGNR product).
 //   * mu is computed without cancellation near the minimiser: with m = |T|^2 / 3,
 //     |T|^6 - 27 tau^2 = 27 (m |D|^2 / 2 - det D) and |T|^2 |cof T|^2 - 9 tau^2 =
-//     |T|^2 |D|^2 - 9 det D, both evaluated from D itself (shape_3d.cc).
+//     |T|^2 |D|^2 - 9 det D, both evaluated from D itself (shape_3d.cc). For |T|^2 / (3 tau^(2/3))
+//     - 1 and |T|^3 / (3 sqrt3 tau) - 1, rho = mu / |w|^2 has the numerator |T|^2 / 6 - det D /
+//     |D|^2 >= |T|^2 / 18 (because D + m I = T^t T >= 0), which never cancels: their residuals use
+//     one straight-line kernel for every T. The two condition-number forms switch to the
+//     published mu far from the minimiser, where |T|^2 - 9 det D / |D|^2 would cancel on needles.
 //   * dr/dT = (s / |w|) (I - n n^t) dw/dT + n (dmu/dT)^t / (2 s), s = sqrt(mu), n = w / |w|; at an
 //     ideal T (w = 0) r = 0 and dr/dT is the limit sqrt(kappa) dw/dT / (tau^(1/3) |T|).
 //

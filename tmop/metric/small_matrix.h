@@ -35,6 +35,23 @@ inline double cbrt_positive(double x) {
   return y - (y * y * y - x) / (3.0 * y * y);
 }
 
+// x^(-1/3) for finite x > 0 without a division: an exponent-dividing bit guess (3.7 % error),
+// two steps y (1 + d/3 + 2 d^2/9), d = 1 - x y^3 (error e -> ~e^3: 1e-4, 1e-11), a Newton step;
+// within 1 ulp. Subnormal and huge x (the guess is wrong there) fall back to std::cbrt.
+inline double inv_cbrt_positive(double x) {
+  if (!(x > 1e-300 && x < 1e300)) return 1.0 / std::cbrt(x);
+  std::uint64_t i;
+  std::memcpy(&i, &x, sizeof i);
+  i = 0x553ee00000000000ULL - i / 3;
+  double y;
+  std::memcpy(&y, &i, sizeof y);
+  for (int k = 0; k < 2; ++k) {
+    const double d = 1.0 - x * (y * y * y);
+    y *= 1.0 + d * (1.0 / 3.0 + d * (2.0 / 9.0));
+  }
+  return y + y * (1.0 - x * (y * y * y)) * (1.0 / 3.0);
+}
+
 template <int D>
 inline double det(const double* T);
 
