@@ -35,8 +35,55 @@ void SamplePointCost::set_surface_frame(const double* F) {
   mutable_parameter_block_sizes()->assign(num_nodes_, 3);
 }
 
+namespace {
+
+// J_i[k][a] = sum_b dr[k][a b] sg_i[b] for the m residuals of one term, written at rows
+// row..row+m-1 of each present block. sg (the weighted G) is a local copy, so the compiler
+// knows the stores into J cannot change it; a compile-time M > 0 unrolls the residual loop
+// (M = 0: m at run time).
+template <int D, int N, int M>
+void chain_rule(int m, const double* dr, const double* sg, int row, double** jacobians) {
+  constexpr int DD = D * D;
+  const int mm = M > 0 ? M : m;
+  for (int i = 0; i < N; ++i) {
+    double* J = jacobians[i];
+    if (!J) continue;
+    const double* g = sg + i * D;
+    J += row * D;
+    for (int k = 0; k < mm; ++k) {
+      const double* drk = dr + k * DD;
+      for (int a = 0; a < D; ++a) {
+        double v = 0;
+        for (int b = 0; b < D; ++b) v += drk[a * D + b] * g[b];
+        J[k * D + a] = v;
+      }
+    }
+  }
+}
+
+template <int D, int N>
+void chain_rule_any(int m, const double* dr, const double* sg, int row, double** jacobians) {
+  switch (m) {
+    case 2:
+      return chain_rule<D, N, 2>(m, dr, sg, row, jacobians);
+    case 3:
+      return chain_rule<D, N, 3>(m, dr, sg, row, jacobians);
+    case 4:
+      return chain_rule<D, N, 4>(m, dr, sg, row, jacobians);
+    case 5:
+      return chain_rule<D, N, 5>(m, dr, sg, row, jacobians);
+    case 9:
+      return chain_rule<D, N, 9>(m, dr, sg, row, jacobians);
+    default:
+      return chain_rule<D, N, 0>(m, dr, sg, row, jacobians);
+  }
+}
+
+}  // namespace
+
 // Volume cells of the common sizes with compile-time D (dimension) and N (nodes): the loops
-// unroll (the generic path below costs ~2x on a tet, docs/benchmarks.md).
+// unroll (the generic path below costs ~2x on a tet, docs/benchmarks.md). The weight is applied
+// to G (N D products) rather than to dr/dT (m D^2).
 template <int D, int N>
 bool SamplePointCost::EvaluateFixed(double const* const* x, double* residuals,
                                     double** jacobians) const {
@@ -56,22 +103,9 @@ bool SamplePointCost::EvaluateFixed(double const* const* x, double* residuals,
     const double s = term.sqrt_weight;
     for (int k = 0; k < m; ++k) r[k] *= s;
     if (jacobians) {
-      for (int k = 0; k < m; ++k)
-        for (int q = 0; q < DD; ++q) dr[k * DD + q] *= s;
-      for (int i = 0; i < N; ++i) {
-        double* J = jacobians[i];
-        if (!J) continue;
-        const double* g = G + i * D;
-        for (int k = 0; k < m; ++k) {
-          const double* drk = dr + k * DD;
-          double* Jrow = J + (row + k) * D;
-          for (int a = 0; a < D; ++a) {
-            double v = 0;
-            for (int b = 0; b < D; ++b) v += drk[a * D + b] * g[b];
-            Jrow[a] = v;
-          }
-        }
-      }
+      double sg[N * D];
+      for (int q = 0; q < N * D; ++q) sg[q] = s * G[q];
+      chain_rule_any<D, N>(m, dr, sg, row, jacobians);
     }
     row += m;
   }
