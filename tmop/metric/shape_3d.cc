@@ -93,7 +93,8 @@ bool deviatoric_303_304(const double* T, double* r, double* dr_dT) {
   const double c01 = M12 * M02 - M01 * D22, c02 = M01 * M12 - D11 * M02,
                c12 = M01 * M02 - D00 * M12;
   const double e = D00 * c00 + M01 * c01 + M02 * c02;
-  // Below s = 1e-30 f^2, e / s and its gradient's contribution w u^t are below rounding.
+  // Below s = 1e-30 f^2 (|D| ~ 1e-15 f: rounding noise of M) dropping e / s changes rho by a
+  // few ulps and w u^t by ~1e-15 of alpha dw/dT.
   const bool deviates = s > 1e-30 * f * f;
   const double is = deviates ? 1.0 / s : 0.0;
   const double dl = e * is, num = f / 6.0 - dl;
