@@ -47,10 +47,32 @@ void make_G(int n, int d, const double* grad, const double* Winv, double* G) {
     }
 }
 
+namespace {
+
+// compute_T of a volume cell with compile-time sizes: the loops unroll.
+template <int D, int N>
+void compute_T_fixed(const Mesh& mesh, const std::int32_t* nodes, const double* G, double* T) {
+  double t[D * D] = {};
+  for (int i = 0; i < N; ++i) {
+    const double* x = mesh.vertex(nodes[i]);
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) t[a * D + b] += x[a] * G[i * D + b];
+  }
+  for (int k = 0; k < D * D; ++k) T[k] = t[k];
+}
+
+}  // namespace
+
 // T = F^T X G: F (space_dim x d, row-major) is the tangent frame of a surface cell, or null
 // when space_dim == d.
 void compute_T(int n, int d, const Mesh& mesh, const std::int32_t* nodes, const double* G,
                double* T, const double* F) {
+  if (!F) {
+    if (d == 3 && n == 4) return compute_T_fixed<3, 4>(mesh, nodes, G, T);
+    if (d == 2 && n == 3) return compute_T_fixed<2, 3>(mesh, nodes, G, T);
+    if (d == 2 && n == 4) return compute_T_fixed<2, 4>(mesh, nodes, G, T);
+    if (d == 3 && n == 8) return compute_T_fixed<3, 8>(mesh, nodes, G, T);
+  }
   for (int k = 0; k < d * d; ++k) T[k] = 0;
   for (int i = 0; i < n; ++i) {
     const double* x = mesh.vertex(nodes[i]);
