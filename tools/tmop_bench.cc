@@ -81,8 +81,8 @@ DEFINE_bool(then_shape, false, "untangle: run the shape stage after untangling (
 DEFINE_string(linear_solver, "auto", "auto, cholesky or cgnr (SolverOptions::LinearSolver).");
 DEFINE_string(solver, "lm", "lm or dogleg.");
 DEFINE_int32(cholesky_max_free_coordinates, -1,
-             "auto picks sparse Cholesky up to this many free coordinates in 3D (-1: the library's "
-             "default, SolverOptions::cholesky_max_free_coordinates_3d).");
+             "auto picks sparse Cholesky up to this many free coordinates, 2D and 3D alike (-1: "
+             "the library's defaults, SolverOptions::cholesky_max_free_coordinates_2d / _3d).");
 DEFINE_int32(cgnr_max_iterations, 0,
              "CGNR inner iterations per step, for 2D and 3D meshes alike (0: the library's "
              "defaults, SolverOptions::cgnr_max_iterations_2d / _3d).");
@@ -241,6 +241,30 @@ void add_recipe(const tmop::RecipeResult& r, const tmop::Status& s, Json* j) {
         .integer("sample_points", st.num_sample_points)
         .integer("free_vertices", st.num_free_vertices)
         .str("termination", st.termination);
+    // Ceres's own split of the time, and the scaling figures of docs/benchmarks.md: minimizer
+    // time per element and iteration, linear-solver time per element and inner iteration.
+    const tmop::StageResult::Times& t = st.times;
+    const double elements = std::max(1, st.num_elements);
+    Json times;
+    times.num("setup", t.setup)
+        .num("preprocessor", t.preprocessor)
+        .num("minimizer", t.minimizer)
+        .num("residual_evaluation", t.residual_evaluation)
+        .integer("residual_evaluations", t.residual_evaluations)
+        .num("jacobian_evaluation", t.jacobian_evaluation)
+        .integer("jacobian_evaluations", t.jacobian_evaluations)
+        .num("linear_solver", t.linear_solver)
+        .integer("linear_solves", t.linear_solves)
+        .integer("linear_iterations", t.linear_iterations);
+    o.obj("times", times)
+        .num("us_per_element_iteration",
+             st.iterations ? 1e6 * t.minimizer / (elements * st.iterations) : 0)
+        .num("us_per_element_evaluation",
+             t.jacobian_evaluations
+                 ? 1e6 * t.jacobian_evaluation / (elements * t.jacobian_evaluations)
+                 : 0)
+        .num("us_per_element_linear_iteration",
+             t.linear_iterations ? 1e6 * t.linear_solver / (elements * t.linear_iterations) : 0);
     stages += (i ? ", " : "") + o.text();
   }
   j->boolean("ok", s.ok())
@@ -263,8 +287,10 @@ tmop::SolverOptions solver_options(const Context& ctx) {
   so.verbose = FLAGS_verbose;
   tmop::linear_solver_from_name(FLAGS_linear_solver, &so.linear_solver);
   tmop::solver_method_from_name(FLAGS_solver, &so.method);
-  if (FLAGS_cholesky_max_free_coordinates >= 0)
+  if (FLAGS_cholesky_max_free_coordinates >= 0) {
+    so.cholesky_max_free_coordinates_2d = FLAGS_cholesky_max_free_coordinates;
     so.cholesky_max_free_coordinates_3d = FLAGS_cholesky_max_free_coordinates;
+  }
   if (FLAGS_function_tolerance >= 0) so.function_tolerance = FLAGS_function_tolerance;
   if (FLAGS_cgnr_max_iterations > 0)
     so.cgnr_max_iterations_2d = so.cgnr_max_iterations_3d = FLAGS_cgnr_max_iterations;
@@ -570,6 +596,7 @@ int main(int argc, char** argv) {
     if (ctx.has_reference) tmop::reorient(&ctx.reference);
     j.boolean("reoriented", true);
   }
+  const int num_elements = ctx.mesh.num_elements();  // the last repeat may take the mesh
   j.obj("mesh", mesh_json(ctx.mesh, FLAGS_input))
       .num("read_seconds", read_seconds)
       .integer("threads", FLAGS_threads > 0 ? FLAGS_threads : std::thread::hardware_concurrency())
@@ -599,7 +626,8 @@ int main(int argc, char** argv) {
     rc = run_perturb(&ctx, &j);
   }
   if (rc == 2) return rc;
-  j.num("peak_rss_mb", peak_rss_mb());
+  j.num("peak_rss_mb", peak_rss_mb())
+      .num("peak_rss_bytes_per_element", peak_rss_mb() * 1048576.0 / std::max(1, num_elements));
   const std::string text = j.text();
   std::printf("%s\n", text.c_str());
   if (!FLAGS_json.empty()) {

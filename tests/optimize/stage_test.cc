@@ -6,6 +6,7 @@
 #include <random>
 
 #include "grid_meshes.h"
+#include "tmop/recipes/equal_edge.h"
 #include "tmop/recipes/improve_shape.h"
 
 namespace tmop {
@@ -200,6 +201,57 @@ TEST(Dogleg, UsesSparseCholeskyUnderAutoAndRefusesCgnr) {
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find("dogleg"), std::string::npos) << s.message();
   EXPECT_EQ(b.coords, mesh.coords);  // the mesh is left as it was
+}
+
+// The auto linear solver: sparse Cholesky up to kCholeskyMaxFreeCoordinates2d / 3d free
+// coordinates, CGNR + Jacobi beyond (CHOLMOD loses from a few hundred on: solver_options.h);
+// equal_edge keeps Cholesky up to its own, larger limits; a caller's limit wins over both.
+TEST(AutoLinearSolver, CholeskyForSmallProblemsCgnrBeyondEqualEdgeLonger) {
+  struct Case {
+    CellType type;
+    int n;              // grid cells per side: (n - 1)^d free vertices
+    const char* shape;  // improve_shape's choice
+    const char* equal;  // equal_edge's
+  };
+  const Case cases[] = {
+      {CellType::kTri3, 12, "sparse_normal_cholesky", "sparse_normal_cholesky"},  // 242
+      {CellType::kTri3, 24, "cgnr_jacobi", "sparse_normal_cholesky"},             // 1058
+      {CellType::kTet4, 5, "sparse_normal_cholesky", "sparse_normal_cholesky"},   // 192
+      {CellType::kTet4, 8, "cgnr_jacobi", "sparse_normal_cholesky"},              // 1029
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(std::string(cell_info(c.type).name) + " n = " + std::to_string(c.n));
+    Mesh mesh = testing_grid::grid(c.type, c.n);
+    std::mt19937 rng(7);
+    testing_grid::perturb(&mesh, c.n, 0.2, &rng);
+    ShapeOptions shape;
+    shape.solver.threads = 1;
+    shape.solver.max_iterations = 2;
+    RecipeResult result;
+    Mesh a = mesh;
+    ASSERT_TRUE(improve_shape(&a, shape, &result).ok());
+    ASSERT_FALSE(result.stages.empty());
+    EXPECT_EQ(result.stages[0].linear_solver, c.shape);
+
+    EqualEdgeOptions equal;
+    equal.solver = shape.solver;
+    Mesh b = mesh;
+    ASSERT_TRUE(equal_edge(&b, equal, &result).ok());
+    ASSERT_FALSE(result.stages.empty());
+    EXPECT_EQ(result.stages[0].linear_solver, c.equal);
+
+    // The caller's limits are kept, by both.
+    equal.solver.cholesky_max_free_coordinates_2d = 0;
+    equal.solver.cholesky_max_free_coordinates_3d = 0;
+    Mesh e = mesh;
+    ASSERT_TRUE(equal_edge(&e, equal, &result).ok());
+    EXPECT_EQ(result.stages[0].linear_solver, "cgnr_jacobi");
+    shape.solver.cholesky_max_free_coordinates_2d = 1 << 20;
+    shape.solver.cholesky_max_free_coordinates_3d = 1 << 20;
+    Mesh f = mesh;
+    ASSERT_TRUE(improve_shape(&f, shape, &result).ok());
+    EXPECT_EQ(result.stages[0].linear_solver, "sparse_normal_cholesky");
+  }
 }
 
 }  // namespace

@@ -18,6 +18,10 @@ struct IterationRecord {
   double seconds = 0;      // wall time since the stage started
 };
 
+// The default limits of SolverOptions::cholesky_max_free_coordinates_2d / _3d (-1).
+constexpr int kCholeskyMaxFreeCoordinates2d = 1000;
+constexpr int kCholeskyMaxFreeCoordinates3d = 200;
+
 struct SolverOptions {
   enum class Method {
     kLevenbergMarquardt,  // default: robust, fewest rejected steps near barriers
@@ -30,12 +34,15 @@ struct SolverOptions {
   };
   Method method = Method::kLevenbergMarquardt;
   LinearSolver linear_solver = LinearSolver::kAuto;
-  // Problems with at most this many free coordinates use sparse Cholesky under kAuto. CHOLMOD
-  // (AMD ordering, Debian's ATLAS BLAS) loses to CGNR early: 2D, 10k triangles (20k free
-  // coordinates) 0.21 s vs 0.17 s, 200k triangles 11.2 s vs 4.6 s; 3D fill-in is far worse (36k
-  // free coordinates: 5.4 s per factorisation). docs/benchmarks.md.
-  int cholesky_max_free_coordinates_2d = 20000;
-  int cholesky_max_free_coordinates_3d = 4000;
+  // Problems with at most this many free coordinates use sparse Cholesky under kAuto; -1 (the
+  // default) means kCholeskyMaxFreeCoordinates2d / 3d below, or the recipe's own choice
+  // (equal_edge keeps Cholesky longer). On this project's machines CHOLMOD (AMD ordering,
+  // Debian's ATLAS BLAS) loses to CGNR + Jacobi from a few hundred free coordinates on, for the
+  // same iterations and results: 3D shape, 1,413 free coordinates 0.29 -> 0.12 s, part 10k tets
+  // (2,703) 0.49 -> 0.25 s; 2D shape, 4,238 free coordinates 0.19 -> 0.09 s, 16,982 0.90 ->
+  // 0.35 s (docs/benchmarks.md, 2026-12-02; the limits were 20,000 and 4,000 before).
+  int cholesky_max_free_coordinates_2d = -1;
+  int cholesky_max_free_coordinates_3d = -1;
   // CGNR inner iterations per outer step (Ceres's max_linear_solver_iterations), by the mesh's
   // element dimension. Large 2D meshes hit the cap in their last steps, which only polish
   // (plate 200k triangles: 50 -> 30 took 4.2 s -> 2.9 s, objective 0.0010130 -> 0.0010131, the

@@ -565,11 +565,13 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                                       ? ceres::DOGLEG
                                       : ceres::LEVENBERG_MARQUARDT;
   const int free_coordinates = static_cast<int>(free_vertices.size()) * d;
-  bool cholesky =
-      spec.solver.linear_solver == SolverOptions::LinearSolver::kSparseCholesky ||
-      (spec.solver.linear_solver == SolverOptions::LinearSolver::kAuto &&
-       (dogleg || free_coordinates <= (d == 2 ? spec.solver.cholesky_max_free_coordinates_2d
-                                              : spec.solver.cholesky_max_free_coordinates_3d)));
+  int cholesky_limit = d == 2 ? spec.solver.cholesky_max_free_coordinates_2d
+                              : spec.solver.cholesky_max_free_coordinates_3d;
+  if (cholesky_limit < 0)
+    cholesky_limit = d == 2 ? kCholeskyMaxFreeCoordinates2d : kCholeskyMaxFreeCoordinates3d;
+  bool cholesky = spec.solver.linear_solver == SolverOptions::LinearSolver::kSparseCholesky ||
+                  (spec.solver.linear_solver == SolverOptions::LinearSolver::kAuto &&
+                   (dogleg || free_coordinates <= cholesky_limit));
   if (cholesky) {
     so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
     result->linear_solver = "sparse_normal_cholesky";
@@ -603,7 +605,20 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
 
   ceres::Solver::Summary summary;
   auto solve = [&]() {
+    StageResult::Times& t = result->times;
+    if (result->solves == 0)
+      t.setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ceres::Solve(so, &problem, &summary);
+    t.preprocessor += summary.preprocessor_time_in_seconds;
+    t.minimizer += summary.minimizer_time_in_seconds;
+    t.residual_evaluation += summary.residual_evaluation_time_in_seconds;
+    t.jacobian_evaluation += summary.jacobian_evaluation_time_in_seconds;
+    t.linear_solver += summary.linear_solver_time_in_seconds;
+    t.residual_evaluations += summary.num_residual_evaluations;
+    t.jacobian_evaluations += summary.num_jacobian_evaluations;
+    t.linear_solves += summary.num_linear_solves;
+    for (const ceres::IterationSummary& it : summary.iterations)
+      t.linear_iterations += it.linear_solver_iterations;
     if (std::getenv("TMOP_CERES_REPORT"))
       std::fprintf(stderr, "%s\n", summary.FullReport().c_str());
     ++result->solves;

@@ -115,6 +115,14 @@ struct StageResult {
   double power_scale = 0;  // power > 1: the scale m of the power objective (StageSpec), else 0
   std::vector<int> inverted_cells;  // cells still inverted after the stage
   std::vector<IterationRecord> history;
+  // Where the time went, from Ceres's summaries summed over the stage's solves (seconds of wall
+  // time). setup: the stage before its first solve (targets, measures, problem construction).
+  struct Times {
+    double setup = 0, preprocessor = 0, minimizer = 0;
+    double residual_evaluation = 0, jacobian_evaluation = 0, linear_solver = 0;
+    int residual_evaluations = 0, jacobian_evaluations = 0, linear_solves = 0;
+    long linear_iterations = 0;  // CGNR inner iterations (1 per solve for Cholesky)
+  } times;
 };
 
 Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result);
