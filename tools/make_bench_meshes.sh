@@ -4,6 +4,7 @@
 # single-threaded gmsh) as binary Gmsh 4.1 files in OUTDIR (keep them out of the repository):
 #   part_10k.msh part_100k.msh part_1m.msh   data/part.geo tets, interior nodes moved by 0.3 x
 #                                            the shortest incident edge, every tet kept valid
+#   part_30k.msh part_300k.msh               the same, for the scaling sweep (tools/bench/scaling.sh)
 #   plate_200k.msh                           ~200k triangles, perturbed the same way
 #   tangle_05.msh tangle_30.msh tangle_40.msh  ~16k tets perturbed without a validity check
 #                                            (~5 / ~30 / ~40 % inverted elements)
@@ -57,6 +58,8 @@ echo "tets of data/part.geo"
 gmsh_mesh "$out/part_cl.geo" 3 0.096 "$out/part_10k_raw.msh"
 gmsh_mesh "$out/part_cl.geo" 3 0.0437 "$out/part_100k_raw.msh"
 gmsh_mesh "$out/part_cl.geo" 3 0.083 "$out/part_16k_raw.msh"
+gmsh_mesh "$out/part_cl.geo" 3 0.068 "$out/part_30k_raw.msh"
+gmsh_mesh "$out/part_cl.geo" 3 0.030 "$out/part_300k_raw.msh"
 if [[ "${SKIP_1M:-0}" != 1 ]]; then
   # HXT: ~10 s where the default Delaunay takes ~5 min at this size.
   gmsh_mesh "$out/part_cl.geo" 3 0.0192 "$out/part_1m_raw.msh" -algo hxt
@@ -67,6 +70,8 @@ gmsh_mesh "$out/plate_cl.geo" 2 0.0045 "$out/plate_200k_raw.msh"
 echo "perturbation (0.3 x shortest incident edge, valid)"
 perturb "$out/part_10k_raw.msh" "$out/part_10k.msh" 0.3 1
 perturb "$out/part_100k_raw.msh" "$out/part_100k.msh" 0.3 2
+perturb "$out/part_30k_raw.msh" "$out/part_30k.msh" 0.3 11
+perturb "$out/part_300k_raw.msh" "$out/part_300k.msh" 0.3 12
 [[ -f "$out/part_1m_raw.msh" ]] && perturb "$out/part_1m_raw.msh" "$out/part_1m.msh" 0.3 3
 perturb "$out/plate_200k_raw.msh" "$out/plate_200k.msh" 0.3 4
 echo "tangled (no validity check)"
