@@ -255,7 +255,13 @@ void add_recipe(const tmop::RecipeResult& r, const tmop::Status& s, Json* j) {
         .integer("jacobian_evaluations", t.jacobian_evaluations)
         .num("linear_solver", t.linear_solver)
         .integer("linear_solves", t.linear_solves)
+        .integer("recorded_linear_solves", t.recorded_linear_solves)
         .integer("linear_iterations", t.linear_iterations);
+    // Per inner iteration: the mean time of a linear solve over the mean inner iterations of the
+    // recorded steps (Ceres does not record the last, untaken step's count; stage.h).
+    const double per_solve = t.linear_solves ? t.linear_solver / t.linear_solves : 0;
+    const double inner_per_solve =
+        t.recorded_linear_solves ? double(t.linear_iterations) / t.recorded_linear_solves : 0;
     o.obj("times", times)
         .num("us_per_element_iteration",
              st.iterations ? 1e6 * t.minimizer / (elements * st.iterations) : 0)
@@ -263,8 +269,9 @@ void add_recipe(const tmop::RecipeResult& r, const tmop::Status& s, Json* j) {
              t.jacobian_evaluations
                  ? 1e6 * t.jacobian_evaluation / (elements * t.jacobian_evaluations)
                  : 0)
+        .num("linear_iterations_per_step", inner_per_solve)
         .num("us_per_element_linear_iteration",
-             t.linear_iterations ? 1e6 * t.linear_solver / (elements * t.linear_iterations) : 0);
+             inner_per_solve > 0 ? 1e6 * per_solve / (elements * inner_per_solve) : 0);
     stages += (i ? ", " : "") + o.text();
   }
   j->boolean("ok", s.ok())

@@ -209,15 +209,18 @@ TEST(Dogleg, UsesSparseCholeskyUnderAutoAndRefusesCgnr) {
 TEST(AutoLinearSolver, CholeskyForSmallProblemsCgnrBeyondEqualEdgeLonger) {
   struct Case {
     CellType type;
-    int n;              // grid cells per side: (n - 1)^d free vertices
+    int n;              // grid cells per side: d (n - 1)^d free coordinates (boundary fixed)
     const char* shape;  // improve_shape's choice
     const char* equal;  // equal_edge's
   };
+  // Free coordinates in the comments; the pairs bracket each limit.
   const Case cases[] = {
-      {CellType::kTri3, 12, "sparse_normal_cholesky", "sparse_normal_cholesky"},  // 242
-      {CellType::kTri3, 24, "cgnr_jacobi", "sparse_normal_cholesky"},             // 1058
+      {CellType::kTri3, 23, "sparse_normal_cholesky", "sparse_normal_cholesky"},  // 968
+      {CellType::kTri3, 24, "cgnr_jacobi", "sparse_normal_cholesky"},             // 1,058
       {CellType::kTet4, 5, "sparse_normal_cholesky", "sparse_normal_cholesky"},   // 192
-      {CellType::kTet4, 8, "cgnr_jacobi", "sparse_normal_cholesky"},              // 1029
+      {CellType::kTet4, 6, "cgnr_jacobi", "sparse_normal_cholesky"},              // 375
+      {CellType::kTet4, 12, "cgnr_jacobi", "sparse_normal_cholesky"},             // 3,993
+      {CellType::kTet4, 13, "cgnr_jacobi", "cgnr_jacobi"},                        // 5,184
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(std::string(cell_info(c.type).name) + " n = " + std::to_string(c.n));

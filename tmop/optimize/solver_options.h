@@ -38,9 +38,10 @@ struct SolverOptions {
   // default) means kCholeskyMaxFreeCoordinates2d / 3d below, or the recipe's own choice
   // (equal_edge keeps Cholesky longer). On this project's machines CHOLMOD (AMD ordering,
   // Debian's ATLAS BLAS) loses to CGNR + Jacobi from a few hundred free coordinates on, for the
-  // same iterations and results: 3D shape, 1,413 free coordinates 0.29 -> 0.12 s, part 10k tets
-  // (2,703) 0.49 -> 0.25 s; 2D shape, 4,238 free coordinates 0.19 -> 0.09 s, 16,982 0.90 ->
-  // 0.35 s (docs/benchmarks.md, 2026-12-02; the limits were 20,000 and 4,000 before).
+  // same iterations and results (shape, p = 2): 3D 1,413 free coordinates 0.24-0.27 -> 0.09-0.12
+  // s, part 10k tets (2,703) 0.45-0.50 -> 0.26-0.29 s; 2D 4,238 0.14-0.18 -> 0.05-0.08 s, 16,982
+  // 0.76-0.84 -> 0.33-0.39 s. The limits are where the two measured alike (3D 201 and 738, 2D
+  // 1,048 free coordinates; docs/benchmarks.md, 2026-12-02; they were 20,000 and 4,000 before).
   int cholesky_max_free_coordinates_2d = -1;
   int cholesky_max_free_coordinates_3d = -1;
   // CGNR inner iterations per outer step (Ceres's max_linear_solver_iterations), by the mesh's

@@ -617,8 +617,11 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     t.residual_evaluations += summary.num_residual_evaluations;
     t.jacobian_evaluations += summary.num_jacobian_evaluations;
     t.linear_solves += summary.num_linear_solves;
-    for (const ceres::IterationSummary& it : summary.iterations)
+    for (const ceres::IterationSummary& it : summary.iterations) {
+      if (it.iteration == 0) continue;  // the starting point: no step
       t.linear_iterations += it.linear_solver_iterations;
+      ++t.recorded_linear_solves;
+    }
     if (std::getenv("TMOP_CERES_REPORT"))
       std::fprintf(stderr, "%s\n", summary.FullReport().c_str());
     ++result->solves;

@@ -115,13 +115,19 @@ struct StageResult {
   double power_scale = 0;  // power > 1: the scale m of the power objective (StageSpec), else 0
   std::vector<int> inverted_cells;  // cells still inverted after the stage
   std::vector<IterationRecord> history;
-  // Where the time went, from Ceres's summaries summed over the stage's solves (seconds of wall
-  // time). setup: the stage before its first solve (targets, measures, problem construction).
+  // Where the time went (seconds of wall time). setup: tmop's own work before the first solve
+  // (targets, measures, problem construction); the rest from Ceres's summaries, summed over the
+  // stage's solves (the work between solves - frame updates, eps rounds - is in none of them).
+  // linear_iterations counts the inner iterations (CGNR; 1 per solve for Cholesky) of the
+  // recorded steps only: a solve that ends on Ceres's function tolerance has run one more linear
+  // solve, for a step it does not take or record, so linear_solves can exceed
+  // recorded_linear_solves by one per solve.
   struct Times {
     double setup = 0, preprocessor = 0, minimizer = 0;
     double residual_evaluation = 0, jacobian_evaluation = 0, linear_solver = 0;
     int residual_evaluations = 0, jacobian_evaluations = 0, linear_solves = 0;
-    long linear_iterations = 0;  // CGNR inner iterations (1 per solve for Cholesky)
+    int recorded_linear_solves = 0;
+    long linear_iterations = 0;
   } times;
 };
 

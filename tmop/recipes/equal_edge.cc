@@ -42,9 +42,10 @@ Status equal_edge(Mesh* mesh, const EqualEdgeOptions& options, RecipeResult* res
   stage.solver = options.solver;
   // Equal sizes couple the whole mesh (a lambda I target is not scale-invariant), so a step
   // needs long-range corrections that CGNR's capped inner iterations resolve slowly: with
-  // CGNR instead of Cholesky it took 20-45 % longer at 306-16,982 free coordinates (cube 5k
-  // tets 1.51 -> 1.67 s, plate 17.6k triangles 0.75 -> 1.05 s; 2026-12-02). It keeps the
-  // library's earlier Cholesky limits unless the caller set its own.
+  // CGNR instead of Cholesky it took 20-45 % longer at 306-16,982 free coordinates (cube 1.6k
+  // tets +40 %, part 4k tets +45 %, cube 5k tets +25 %, plate 17.6k triangles +20 %;
+  // docs/benchmarks.md, 2026-12-02). It keeps the library's earlier Cholesky limits unless the
+  // caller set its own.
   if (stage.solver.cholesky_max_free_coordinates_2d < 0)
     stage.solver.cholesky_max_free_coordinates_2d = 20000;
   if (stage.solver.cholesky_max_free_coordinates_3d < 0)

@@ -24,6 +24,7 @@ while [[ $# -gt 0 && "$1" != "--" ]]; do
 done
 [[ $# -gt 0 ]] && shift
 flags=("$@")
+[[ ${#meshes[@]} -gt 0 ]] || { echo "$0: no mesh given" >&2; exit 2; }
 bench="${TMOP_BENCH:-}"
 if [[ -z "$bench" ]]; then
   bench="$root/build-bench/tools/tmop_bench"
@@ -33,12 +34,21 @@ fi
 command -v python3 >/dev/null || { echo "$0: python3 is needed for the table" >&2; exit 2; }
 
 tmp="$(mktemp -d)"
-trap 'rm -rf "$tmp"' EXIT
+trap 'rm -rf "$tmp" "$out.tmp"' EXIT
 i=0
 for m in "${meshes[@]}"; do
   i=$((i + 1))
   echo "  $(basename "$m") ..." >&2
-  "$bench" --input="$m" --task=shape --json="$tmp/$i.json" "${flags[@]}" >/dev/null
+  # A mesh that fails (unreadable, or a recipe failure) gets a row saying so; the others go on.
+  if ! "$bench" --input="$m" --task=shape --json="$tmp/$i.json" "${flags[@]}" >/dev/null \
+    2>"$tmp/$i.err"; then
+    [[ -s "$tmp/$i.json" ]] || python3 -c '
+import json, sys
+lines = open(sys.argv[2]).read().strip().splitlines()
+print(json.dumps({"ok": False, "mesh": {"path": sys.argv[1]},
+                  "message": lines[-1] if lines else "tmop_bench failed"}))' "$m" "$tmp/$i.err" \
+      >"$tmp/$i.json"
+  fi
 done
 
 python3 - "$tmp" "$i" "$out.tmp" <<'PY'
@@ -48,18 +58,26 @@ recs = [json.load(open(os.path.join(tmp, f"{k}.json"))) for k in range(1, n + 1)
 with open(out, "w") as f:
     json.dump(recs, f, indent=1)
     f.write("\n")
-base = min(recs, key=lambda r: r["mesh"]["elements"])
+os.replace(out, out[:-len(".tmp")])  # the records are in place before the table is made
+good = [r for r in recs if r.get("ok") and r.get("stages")]
+if not good:
+    sys.exit("no mesh ran")
+base = min(good, key=lambda r: r["mesh"]["elements"])
 print("| mesh | elements | free vertices | iterations | wall s | setup s | Ceres minimizer s "
-      "| us / element / iteration | us / element / evaluation | CG iterations "
+      "| us / element / iteration | us / element / evaluation | CG iterations (recorded steps) "
       "| us / element / CG iteration | peak RSS MB | bytes / element | marginal bytes / element "
       "| final objective | min quality |")
 print("|" + "---|" * 16)
 per_it = []
 for r in recs:
-    st = r["stages"][0]
+    if r not in good:
+        print("| %s | failed: %s |" % (os.path.basename(r["mesh"]["path"]), r.get("message", "")))
+        continue
+    st = r["stages"][0]  # the shape stage (a guard round, when one ran, is not counted here)
     t = st["times"]
     e = r["mesh"]["elements"]
-    per_it.append(st["us_per_element_iteration"])
+    if st["us_per_element_iteration"] > 0:
+        per_it.append(st["us_per_element_iteration"])
     marginal = ""
     if e > base["mesh"]["elements"]:
         marginal = "%.0f" % ((r["peak_rss_mb"] - base["peak_rss_mb"]) * 1048576.0 /
@@ -72,9 +90,9 @@ for r in recs:
         r["peak_rss_bytes_per_element"], marginal, r["final_objective"],
         r["min_quality_after"]))
 print()
-print("us / element / iteration: max / min = %.2f" % (max(per_it) / min(per_it)))
-r0 = recs[0]
+if per_it:
+    print("us / element / iteration: max / min = %.2f" % (max(per_it) / min(per_it)))
+r0 = good[0]
 print("machine: %s, %d cores; commit %s; %s" % (r0["machine"]["cpu"], r0["machine"]["nproc"],
                                               r0["commit"], r0["date"]))
 PY
-mv "$out.tmp" "$out"
