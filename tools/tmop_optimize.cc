@@ -27,6 +27,7 @@
 #include "tmop/mesh/orientation.h"
 #include "tmop/mesh/validate.h"
 #include "tmop/metric/metric.h"
+#include "tmop/quality/quality_fields.h"
 #include "tmop/quality/quality_json.h"
 #include "tmop/quality/quality_report.h"
 #include "tmop/recipes/equal_edge.h"
@@ -36,6 +37,7 @@
 #include "tmop/recipes/size_adapt.h"
 #include "tmop/recipes/sliver.h"
 #include "tmop/recipes/untangle.h"
+#include "tmop/target/target.h"
 #include "tools/parse_flags.h"
 #include "tools/print_error.h"
 
@@ -145,7 +147,9 @@ bool write_text_atomically(const std::string& path, const std::string& text) {
 }
 
 // One line of the quality report (tmop_quality gives the whole report); returns the report.
-tmop::QualityReport print_quality(const char* label, const tmop::Mesh& mesh) {
+// keep_per_cell: keep the per-cell arrays (to refresh the mesh's quality fields with them).
+tmop::QualityReport print_quality(const char* label, const tmop::Mesh& mesh,
+                                  bool keep_per_cell = false) {
   tmop::QualityReport q = tmop::compute_quality(mesh);
   std::printf("%-7s %lld elements, %lld inverted", label, static_cast<long long>(q.num_elements),
               static_cast<long long>(q.inverted_cells));
@@ -161,7 +165,7 @@ tmop::QualityReport print_quality(const char* label, const tmop::Mesh& mesh) {
     std::printf(", %lld of %lld certified", static_cast<long long>(q.certified_cells),
                 static_cast<long long>(q.certifiable_cells));
   std::printf("\n");
-  q.release_per_cell_values();  // the run report needs the summaries only
+  if (!keep_per_cell) q.release_per_cell_values();  // the run report needs the summaries only
   return q;
 }
 
@@ -314,6 +318,10 @@ int main(int argc, char** argv) {
   if (!FLAGS_reference.empty()) {
     s = read_mesh(FLAGS_reference, &reference);
     if (!s.ok()) return fail(2, s.message());
+    // Checked before any work: a reference of another mesh is a usage error (exit 2).
+    if (!reference_matches(mesh, reference))
+      return fail(2, FLAGS_reference + ": its vertices and cells do not match those of " +
+                         FLAGS_input + " (a reference mesh must have the same topology)");
     opt.target.reference = &reference;
   }
 
@@ -447,7 +455,7 @@ int main(int argc, char** argv) {
                                " inverted cells, the input had " + std::to_string(before.inverted);
     }
   }
-  QualityReport quality_after = print_quality("after:", mesh);
+  QualityReport quality_after = print_quality("after:", mesh, !mesh.cell_data.empty());
   quality_after.opposite_convention = flipped;  // written back in the input's convention
   if (result.layer_cells >= 0)
     std::printf("boundary layer: %d cells, %d vertices held on its outer surface\n",
@@ -456,6 +464,9 @@ int main(int argc, char** argv) {
     std::printf("certified valid everywhere (Bernstein bound): %d of %d quadratic cells\n",
                 result.certified, result.certified + result.uncertified);
 
+  // Per-cell quality arrays of the input (a tmop_quality --output file) describe the old nodes.
+  if (refresh_quality_fields(quality_after, &mesh))
+    std::printf("quality fields of the input replaced by the result's\n");
   if (flipped) reorient(&mesh);
   s = write_mesh(FLAGS_output, mesh, wopt);
   if (!s.ok()) return fail(2, s.message());

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -110,6 +112,65 @@ TEST_F(TmopOptimizeTool, HonestFailureWritesTheInputOnlyWhenAsked) {
   Mesh written;
   ASSERT_TRUE(read_mesh(out, &written).ok());
   EXPECT_EQ(written.coords, m.coords);
+}
+
+// A reference mesh of another topology is a usage error, refused before any work.
+TEST_F(TmopOptimizeTool, ReferenceOfAnotherTopologyExitsTwoBeforeOptimizing) {
+  const std::string ref = dir_ + "/ref.msh";
+  ASSERT_TRUE(write_mesh(ref, testing_grid::grid(CellType::kTri3, 3)).ok());
+  std::string err;
+  EXPECT_EQ(run("--input=" + dir_ + "/grid.msh --output=" + dir_ + "/o.vtu --target=reference" +
+                    " --reference=" + ref,
+                &err),
+            2);
+  EXPECT_EQ(lines(err), 1) << err;
+  EXPECT_NE(err.find(ref + ": its vertices and cells do not match"), std::string::npos) << err;
+  std::ifstream out(dir_ + "/out.txt");
+  std::stringstream ss;
+  ss << out.rdbuf();
+  EXPECT_EQ(ss.str().find("before:"), std::string::npos) << ss.str();
+}
+
+// tmop_quality --output writes NaN where a measure does not apply (the boundary lines of the grid
+// here): tmop_optimize reads that file and writes the result with its own quality, not the
+// input's stale arrays.
+TEST_F(TmopOptimizeTool, ReadsTmopQualityOutputAndRefreshesItsQualityFields) {
+  const std::string quality_tool = TMOP_BINARY_DIR "/tools/tmop_quality";
+  if (std::system(("test -x " + quality_tool).c_str()) != 0) GTEST_SKIP() << "no tmop_quality";
+  Mesh m = testing_grid::grid(CellType::kTri3, 4);
+  m.coords[2 * 12] += 0.2;  // the centre vertex of the 5 x 5 grid moved: poorer triangles
+  for (std::int32_t i = 0; i < 4; ++i) {  // the bottom boundary as line cells
+    const std::int32_t line[2] = {i, i + 1};
+    m.add_cell(CellType::kLine2, line);
+  }
+  ASSERT_TRUE(write_mesh(dir_ + "/bad.msh", m).ok());
+  const std::string q = dir_ + "/q.vtu", o = dir_ + "/o.vtu";
+  ASSERT_EQ(
+      std::system(
+          (quality_tool + " --input=" + dir_ + "/bad.msh --output=" + q + " > /dev/null").c_str()),
+      0);
+  Mesh with_fields;
+  ASSERT_TRUE(read_mesh(q, &with_fields).ok());
+  std::string err;
+  ASSERT_EQ(run("--input=" + q + " --output=" + o + " --recipe=shape", &err), 0) << err;
+  Mesh result, result_quality;
+  ASSERT_TRUE(read_mesh(o, &result).ok());
+  auto min_of = [](const Mesh& mesh, const std::string& name) {
+    double v = 1e300;
+    for (const DataArray& a : mesh.cell_data)
+      if (a.name == name)
+        for (double x : a.values)
+          if (!std::isnan(x)) v = std::min(v, x);
+    return v;
+  };
+  // The result's array is the result's quality: tmop_quality on the output agrees with it.
+  ASSERT_EQ(std::system(
+                (quality_tool + " --input=" + o + " --output=" + dir_ + "/oq.vtu" + " > /dev/null")
+                    .c_str()),
+            0);
+  ASSERT_TRUE(read_mesh(dir_ + "/oq.vtu", &result_quality).ok());
+  EXPECT_GT(min_of(result, "mean_ratio"), min_of(with_fields, "mean_ratio"));
+  EXPECT_EQ(min_of(result, "mean_ratio"), min_of(result_quality, "mean_ratio"));
 }
 
 }  // namespace

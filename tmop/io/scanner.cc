@@ -78,7 +78,7 @@ std::int64_t Scanner::integer(std::int64_t lo, std::int64_t hi, const char* what
   return v;
 }
 
-double Scanner::real(const char* what) {
+double Scanner::real(const char* what, bool finite_only) {
   skip_space();
   const std::size_t start = pos_;
   if (pos_ >= data_.size()) fail(std::string("unexpected end of file, expected ") + what);
@@ -92,7 +92,7 @@ double Scanner::real(const char* what) {
     std::string_view t = token();
     fail_at(start, std::string("expected ") + what + ", got '" + printable(t) + "'");
   }
-  if (!std::isfinite(v)) fail_at(start, std::string(what) + " is not finite");
+  if (finite_only && !std::isfinite(v)) fail_at(start, std::string(what) + " is not finite");
   pos_ = static_cast<std::size_t>(r.ptr - data_.data());
   return v;
 }

@@ -40,9 +40,11 @@ class Scanner {
   std::string_view token();               // next token; fails at end of file
   bool try_token(std::string_view* out);  // false at end of file
   std::int64_t integer(std::int64_t lo, std::int64_t hi, const char* what);
-  double real(const char* what);  // finite values only
-  std::string_view line();        // rest of the current line without "\r\n"; moves past it
-  void skip_line();               // moves past the next '\n'
+  // A real number; only finite values unless finite_only is false (data arrays, where VTK
+  // writes NaN for "no value": "nan", "inf" and "infinity" in any case, with a sign).
+  double real(const char* what, bool finite_only = true);
+  std::string_view line();  // rest of the current line without "\r\n"; moves past it
+  void skip_line();         // moves past the next '\n'
   // Moves past the next line that, trimmed, equals `text`; false (position at end) if none.
   bool skip_to_line(std::string_view text);
 

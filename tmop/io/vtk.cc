@@ -181,22 +181,24 @@ class VtkReader {
     return static_cast<double>(s_.binary<std::int64_t>(true, what));
   }
 
-  void read_reals(std::int64_t n, std::string_view type, std::vector<double>* out,
-                  const char* what) {
+  // finite: refuse NaN and infinities (coordinates; data values keep them: VTK writes NaN where
+  // a value does not apply, and the arrays' users check what they take).
+  void read_reals(std::int64_t n, std::string_view type, std::vector<double>* out, const char* what,
+                  bool finite = true) {
     out->resize(static_cast<std::size_t>(n));
     if (binary_ && type == "double") {  // the common case, without per-value type dispatch
       for (std::int64_t i = 0; i < n; ++i) {
         const std::size_t p = s_.pos();
         const double v = s_.binary<double>(true, what);
-        if (!std::isfinite(v)) s_.fail_byte(p, std::string(what) + " is not finite");
+        if (finite && !std::isfinite(v)) s_.fail_byte(p, std::string(what) + " is not finite");
         (*out)[static_cast<std::size_t>(i)] = v;
       }
       return;
     }
     for (std::int64_t i = 0; i < n; ++i) {
       const std::size_t p = s_.pos();
-      const double v = binary_ ? binary_value(type, what) : s_.real(what);
-      if (!std::isfinite(v)) s_.fail_byte(p, std::string(what) + " is not finite");
+      const double v = binary_ ? binary_value(type, what) : s_.real(what, finite);
+      if (finite && !std::isfinite(v)) s_.fail_byte(p, std::string(what) + " is not finite");
       (*out)[static_cast<std::size_t>(i)] = v;
     }
   }
@@ -328,7 +330,7 @@ class VtkReader {
     DataArray a;
     a.name = std::move(name);
     a.components = comps;
-    read_reals(n * comps, type, &a.values, "data value");
+    read_reals(n * comps, type, &a.values, "data value", /*finite=*/false);
     out->push_back(std::move(a));
   }
 

@@ -292,7 +292,7 @@ class VtuReader {
             break;
           case kPointData:
           case kCellData: {
-            Array a = read_array(t, section == kPointData ? np : nc);
+            Array a = read_array(t, section == kPointData ? np : nc, /*finite=*/false);
             (section == kPointData ? mesh_->point_data : mesh_->cell_data)
                 .push_back(DataArray{a.name, a.components, std::move(a.values)});
             break;
@@ -319,8 +319,10 @@ class VtuReader {
     s_.set_pos(e + 12);
   }
 
-  // items < 0: any number of tuples.
-  Array read_array(const Tag& t, std::int64_t items) {
+  // items < 0: any number of tuples. finite: refuse NaN and infinities (points and cells; data
+  // arrays keep them: VTK writes NaN where a value does not apply, and the arrays' users check
+  // what they take).
+  Array read_array(const Tag& t, std::int64_t items, bool finite = true) {
     Array a;
     if (const std::string* n = t.attr("Name")) a.name = *n;
     a.components = static_cast<int>(int_attr(t, "NumberOfComponents", 1, 1000, 1));
@@ -343,7 +345,7 @@ class VtuReader {
         if (expected >= 0 && static_cast<std::int64_t>(a.values.size()) >= expected)
           sc.fail("DataArray '" + a.name + "' has more than " + std::to_string(expected) +
                   " values");
-        a.values.push_back(sc.real("value"));
+        a.values.push_back(sc.real("value", finite));
       }
       s_.set_pos(e + 12);
     } else if (f == "binary") {
@@ -354,7 +356,7 @@ class VtuReader {
       const std::size_t p0 = s_.pos();
       if (!base64_decode(s_.data().substr(p0, e - p0), &raw, &bad))
         s_.fail_at(p0 + bad, "invalid base64 character in DataArray '" + a.name + "'");
-      decode_binary(raw, 0, p0, *type, size, &a);
+      decode_binary(raw, 0, p0, *type, size, finite, &a);
       s_.set_pos(e + 12);
     } else if (f == "appended") {
       if (!have_appended_) s_.fail_at(t.start, "format=\"appended\" but no <AppendedData>");
@@ -364,7 +366,7 @@ class VtuReader {
       if (static_cast<std::uint64_t>(off) >= s_.data().size() - appended_)
         s_.fail_at(t.start, "DataArray offset " + std::to_string(off) + " beyond the file end");
       const std::size_t p0 = appended_ + static_cast<std::size_t>(off);
-      decode_binary(s_.data(), p0, p0, *type, size, &a);
+      decode_binary(s_.data(), p0, p0, *type, size, finite, &a);
       skip_array(t);
     } else {
       s_.fail_at(t.start, "unknown DataArray format '" + f + "'");
@@ -397,7 +399,7 @@ class VtuReader {
 
   // buf[p0...] holds header + payload; file_pos locates errors (decoded bytes for base64).
   void decode_binary(std::string_view buf, std::size_t p0, std::size_t file_pos,
-                     const std::string& type, int size, Array* a) {
+                     const std::string& type, int size, bool finite, Array* a) {
     std::size_t p = p0;
     std::string bytes;
     if (!zlib_) {
@@ -463,9 +465,10 @@ class VtuReader {
       convert<std::int64_t>(bytes, a);
     else
       convert<std::uint64_t>(bytes, a);
-    for (double v : a->values)
-      if (!std::isfinite(v))
-        s_.fail_byte(file_pos, "DataArray '" + a->name + "' holds a non-finite value");
+    if (finite)
+      for (double v : a->values)
+        if (!std::isfinite(v))
+          s_.fail_byte(file_pos, "DataArray '" + a->name + "' holds a non-finite value");
   }
 
   template <typename T>

@@ -40,4 +40,21 @@ void add_quality_fields(const QualityReport& report, Mesh* mesh) {
     if (any(m->values)) put(m->key, m->values, mesh);
 }
 
+bool refresh_quality_fields(const QualityReport& report, Mesh* mesh) {
+  auto is_quality_field = [&](const std::string& name) {
+    if (name == "inverted" || name == "certified" || name == "all_boundary") return true;
+    for (const QualityMeasure* m : report.measures())
+      if (name == m->key) return true;
+    return false;
+  };
+  const std::size_t n = mesh->cell_data.size();
+  mesh->cell_data.erase(
+      std::remove_if(mesh->cell_data.begin(), mesh->cell_data.end(),
+                     [&](const DataArray& a) { return is_quality_field(a.name); }),
+      mesh->cell_data.end());
+  if (mesh->cell_data.size() == n) return false;
+  add_quality_fields(report, mesh);
+  return true;
+}
+
 }  // namespace tmop

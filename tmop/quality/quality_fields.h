@@ -21,6 +21,12 @@ namespace tmop {
 // report must come from compute_quality(*mesh) (same cells); CHECK-style abort otherwise.
 void add_quality_fields(const QualityReport& report, Mesh* mesh);
 
+// For a mesh that already carries quality fields (arrays with the names above, e.g. written by
+// tmop_quality --output) whose nodes have moved since: removes every such array and, when there
+// was one, adds the report's (which must describe the mesh as it is now). Returns whether it
+// did, so an optimized mesh never carries the input's stale per-cell quality.
+bool refresh_quality_fields(const QualityReport& report, Mesh* mesh);
+
 }  // namespace tmop
 
 #endif  // TMOP_QUALITY_QUALITY_FIELDS_H_

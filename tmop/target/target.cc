@@ -213,9 +213,9 @@ Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec
         h = 0;
         for (int i = 0; i < mesh.cell_size(c); ++i) h += N[i] * field->values[mesh.cell(c)[i]];
         h /= spec.frame.length;  // user units -> the mesh's
-        if (!(h > 0))
-          return Status::Failure("size field '" + spec.size_field + "' is not positive in cell " +
-                                 std::to_string(c));
+        if (!(h > 0) || !std::isfinite(h))
+          return Status::Failure("size field '" + spec.size_field +
+                                 "' is not positive and finite in cell " + std::to_string(c));
       }
       for (int i = 0; i < d * d; ++i) w[i] = h * ideal[i];
     }
