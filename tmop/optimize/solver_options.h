@@ -6,13 +6,22 @@
 #define TMOP_OPTIMIZE_SOLVER_OPTIONS_H_
 
 #include <functional>
+#include <limits>
 #include <string>
 
 namespace tmop {
 
 struct IterationRecord {
   int iteration = 0;
-  double objective = 0;    // mean over elements of the (weighted) metric value, exact mu
+  // The stage's objective in StageResult's units (initial_objective / final_objective): the mean
+  // over elements of sum_t c_t mu_t, exact mu. Measured only when the progress is reported
+  // (verbose or a progress callback: a pass over the mesh), NaN otherwise.
+  double objective = std::numeric_limits<double>::quiet_NaN();
+  // What the solver minimises, per element: 2 x Ceres's cost / elements. It differs from
+  // `objective` under a power p > 1 (the power objective), for metrics whose minimum is not 0
+  // (residuals carry mu - mu_min) and by the points whose nodes are all fixed (not in the
+  // problem). Recorded at every iteration.
+  double solver_objective = 0;
   double min_quality = 0;  // worst shape quality over sample points (1 ideal, <= 0 inverted)
   int inverted = 0;        // elements with det A <= 0 at a sample point
   double seconds = 0;      // wall time since the stage started
@@ -79,8 +88,9 @@ struct SolverOptions {
 
   int threads = 0;  // 0: all hardware threads
   // Called after every iteration (also iteration 0) when set; verbose prints a line to stderr.
-  // Without either, the per-iteration history records the objective only (the worst quality and
-  // inverted count cost a pass over the mesh; they are measured before and after the stage).
+  // Without either, the per-iteration history records the solver's objective only (the
+  // objective, worst quality and inverted count cost passes over the mesh; they are measured
+  // before and after the stage).
   std::function<void(const IterationRecord&)> progress;
   bool verbose = false;
 };

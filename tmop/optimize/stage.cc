@@ -11,9 +11,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <thread>
 #include <unordered_map>
+#include <utility>
 
 #include "tmop/element/ideal_element.h"
 #include "tmop/element/shape.h"
@@ -32,9 +34,10 @@ namespace {
 
 class StageCallback final : public ceres::IterationCallback {
  public:
+  // exact_objective: the stage's objective at the current nodes (measured when reporting).
   StageCallback(Mesh* mesh, const StageSpec& spec, const IdealTable& table, const Frames& frames,
                 const std::vector<int>& free_vertices, const std::vector<double>& shortest,
-                int num_elements, StageResult* result)
+                int num_elements, std::function<double()> exact_objective, StageResult* result)
       : mesh_(mesh),
         spec_(spec),
         table_(table),
@@ -42,6 +45,7 @@ class StageCallback final : public ceres::IterationCallback {
         free_(free_vertices),
         shortest_(shortest),
         num_elements_(num_elements),
+        exact_objective_(std::move(exact_objective)),
         result_(result),
         start_(std::chrono::steady_clock::now()) {
     previous_.resize(free_.size() * mesh->space_dim);
@@ -52,7 +56,11 @@ class StageCallback final : public ceres::IterationCallback {
     const bool report = spec_.solver.verbose || static_cast<bool>(spec_.solver.progress);
     IterationRecord rec;
     if (report) {
-      rec = measure(*mesh_, table_, frames_);
+      double objective = 0;
+      side_by_side(
+          spec_.solver.threads != 1, [&] { rec = measure(*mesh_, table_, frames_); },
+          [&] { objective = exact_objective_(); });
+      rec.objective = objective;
     } else {
       rec.min_quality = std::numeric_limits<double>::quiet_NaN();
       rec.inverted = -1;
@@ -60,14 +68,15 @@ class StageCallback final : public ceres::IterationCallback {
     rec.iteration = s.iteration == 0 && !result_->history.empty()
                         ? result_->history.back().iteration  // a frame or eps round restarts
                         : (result_->history.empty() ? 0 : result_->history.back().iteration + 1);
-    rec.objective = 2 * s.cost / std::max(1, num_elements_);
+    rec.solver_objective = 2 * s.cost / std::max(1, num_elements_);
     rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     result_->history.push_back(rec);
     if (spec_.solver.verbose)
       std::fprintf(stderr,
-                   "  [%s] iter %4d  objective %.6e  min quality %.4f  inverted %d  %.2f s\n",
-                   spec_.name.c_str(), rec.iteration, rec.objective, rec.min_quality, rec.inverted,
-                   rec.seconds);
+                   "  [%s] iter %4d  objective %.6e  (solver %.6e)  min quality %.4f  inverted %d"
+                   "  %.2f s\n",
+                   spec_.name.c_str(), rec.iteration, rec.objective, rec.solver_objective,
+                   rec.min_quality, rec.inverted, rec.seconds);
     if (spec_.solver.progress) spec_.solver.progress(rec);
 
     if (s.iteration == 0) {  // a new solve (frame or eps round): its own counts
@@ -146,6 +155,7 @@ class StageCallback final : public ceres::IterationCallback {
   const std::vector<int>& free_;
   const std::vector<double>& shortest_;
   int num_elements_;
+  std::function<double()> exact_objective_;
   StageResult* result_;
   std::chrono::steady_clock::time_point start_;
   std::vector<double> previous_;
@@ -599,7 +609,12 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   // already of one scale: Ceres's Jacobi column scaling would only add two passes over J per
   // iteration (30 % of an iteration at 100k tets, the same iterates; docs/benchmarks.md).
   so.jacobi_scaling = false;
-  StageCallback callback(mesh, spec, table, frames, free_vertices, shortest, num_elements, result);
+  StageCallback callback(
+      mesh, spec, table, frames, free_vertices, shortest, num_elements,
+      [&] {
+        return exact_objective(*mesh, spec, G, point_cell, point_weight, num_elements, frames);
+      },
+      result);
   callback.set_power_scale(result->power_scale);
   so.callbacks.push_back(&callback);
 

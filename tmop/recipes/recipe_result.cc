@@ -47,7 +47,8 @@ std::string record_json(const IterationRecord& r, bool with_iteration) {
   std::string s = "{";
   if (with_iteration)
     s += "\"iteration\": " + std::to_string(r.iteration) +
-         ", \"objective\": " + json_number(r.objective) + ", ";
+         ", \"objective\": " + json_number(r.objective) +
+         ", \"solver_objective\": " + json_number(r.solver_objective) + ", ";
   s += "\"min_quality\": " + json_number(r.min_quality) +
        ", \"inverted\": " + (r.inverted < 0 ? std::string("null") : std::to_string(r.inverted));
   if (with_iteration) s += ", \"seconds\": " + json_number(r.seconds);

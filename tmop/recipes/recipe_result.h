@@ -32,7 +32,9 @@ struct RecipeResult {
 //  "stages": [{"name", "linear_solver", "elements", "sample_points", "free_vertices",
 //   "initial_objective", "final_objective", "iterations", "termination", "seconds",
 //   "inverted_before", "inverted_after", "min_quality_before", "min_quality_after",
-//   "history": [{"iteration", "objective", "min_quality", "inverted", "seconds"}]}]}
+//   "history": [{"iteration", "objective", "solver_objective", "min_quality", "inverted",
+//                "seconds"}]}]}  (IterationRecord: objective, min_quality and inverted are null
+//   unless the progress was reported, e.g. --verbose)
 std::string recipe_json(const RecipeResult& result);
 
 // Escapes a string for JSON (quotes included).
