@@ -55,7 +55,9 @@ DEFINE_string(recipe, "auto",
 DEFINE_bool(write_on_failure, false,
             "When the recipe fails (e.g. cannot untangle or certify), still write --output: the "
             "result if it has fewer inverted cells than the input, else the input; exit 1.");
-DEFINE_string(metric, "", "Metric name (default: the recipe's); see --list_metrics.");
+DEFINE_string(metric, "",
+              "Metric name (default: the recipe's; see --list_metrics), or a weighted "
+              "combination of two: W1*NAME1+W2*NAME2 (e.g. 0.7*shape_barrier+0.3*size_barrier).");
 DEFINE_bool(list_metrics, false, "Print the metric names for 2D and 3D meshes and exit.");
 DEFINE_string(target, "equal_size",
               "Target construction: ideal_unit, equal_size, local_size, reference, "
@@ -211,6 +213,7 @@ int main(int argc, char** argv) {
       for (const std::string& n : metric_names(d)) std::printf(" %s", n.c_str());
       std::printf("\n");
     }
+    std::printf("weighted combinations of two: W1*NAME1+W2*NAME2 (weights >= 0, default 1)\n");
     return 0;
   }
   if (FLAGS_input.empty() || FLAGS_output.empty())
@@ -312,7 +315,7 @@ int main(int argc, char** argv) {
     std::string known;
     for (const std::string& n : metric_names(mesh.dim())) known += (known.empty() ? "" : ", ") + n;
     return fail(2, "unknown --metric '" + FLAGS_metric + "' for " + std::to_string(mesh.dim()) +
-                       "D meshes (known: " + known + ")");
+                       "D meshes (known: " + known + "; or W1*NAME1+W2*NAME2 with weights >= 0)");
   }
   Mesh reference;
   if (!FLAGS_reference.empty()) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <vector>
 
 #include "tests/metric/metric_test_util.h"
 #include "tmop/metric/metric.h"
@@ -83,6 +84,35 @@ TEST(MetricRegistry, UnknownNamesAndDimensionsGiveNull) {
   EXPECT_EQ(make_metric("mu_303", 2), nullptr);
   EXPECT_EQ(make_metric("size", 4), nullptr);
   EXPECT_TRUE(metric_names(1).empty());
+}
+
+// "W1*NAME1+W2*NAME2": a weighted sum of two registry metrics, value and residuals consistent,
+// barrier when either part is; malformed texts give null.
+TEST(MetricRegistry, WeightedCombinationsOfTwo) {
+  std::unique_ptr<Metric> m = make_metric("0.7*shape_barrier+0.3*size_barrier", 3);
+  ASSERT_NE(m, nullptr);
+  EXPECT_EQ(m->name(), "0.7*shape_barrier_3d+0.3*size_barrier_3d");
+  EXPECT_EQ(m->alias(), "0.7*mu_303+0.3*mu_316");
+  EXPECT_TRUE(m->barrier());
+  EXPECT_EQ(m->metric_class(), MetricClass::kShapeSize);
+  const std::unique_ptr<Metric> a = make_metric("shape_barrier", 3), b = make_metric("mu_316", 3);
+  const double T[9] = {1.2, 0.1, -0.2, 0.05, 0.9, 0.1, 0.0, -0.15, 1.1};
+  EXPECT_NEAR(m->value(T), 0.7 * a->value(T) + 0.3 * b->value(T), 1e-14);
+  std::vector<double> r(m->num_residuals());
+  ASSERT_TRUE(m->residuals(T, r.data(), nullptr));
+  double rr = 0;
+  for (double x : r) rr += x * x;
+  EXPECT_NEAR(rr, m->value(T) - m->min_value(), 1e-12);
+  // Default weight 1, aliases, an exponent's '+', a non-barrier sum.
+  std::unique_ptr<Metric> n = make_metric("shape+1e+0*mu_14", 2);
+  ASSERT_NE(n, nullptr);
+  EXPECT_EQ(n->name(), "1*shape_2d+1*size_shape_orientation_2d");
+  EXPECT_FALSE(n->barrier());
+  for (const char* bad :
+       {"0.5*shape_barrier", "shape+size+size_shape", "-1*shape+size", "x*shape+size", "shape+",
+        "+shape", "0*shape+0*size", "shape_3d+size", "nan*shape+size", "shape**size+size"})
+    EXPECT_EQ(make_metric(bad, 2), nullptr) << bad;
+  EXPECT_EQ(make_metric("untangle+untangle", 3), nullptr);  // more than kMaxMetricResiduals
 }
 
 TEST(MetricRegistry, DimensionFreeNamesPickTheDimension) {

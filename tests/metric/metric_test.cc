@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdio>
 #include <limits>
 #include <set>
@@ -34,6 +35,8 @@ std::vector<Case> all_cases() {
   std::vector<Case> cases;
   for (int d = 2; d <= 3; ++d) {
     for (const std::string& n : metric_test::canonical_names(d)) cases.push_back({d, n});
+    // A weighted combination (make_metric's "W1*NAME1+W2*NAME2"): shape + size is shape+size.
+    cases.push_back({d, "0.7*shape_barrier+0.3*size_barrier"});
   }
   return cases;
 }
@@ -267,7 +270,13 @@ TEST_P(MetricTest, NonFiniteInputIsRefused) {
 
 INSTANTIATE_TEST_SUITE_P(AllMetrics, MetricTest, ::testing::ValuesIn(all_cases()),
                          [](const ::testing::TestParamInfo<Case>& info) {
-                           return info.param.name;
+                           std::string name = info.param.name;  // gtest: [A-Za-z0-9_] only
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name + (name.find("_2d") == std::string::npos &&
+                                                  name.find("_3d") == std::string::npos
+                                              ? "_" + std::to_string(info.param.dim) + "d"
+                                              : std::string());
                          });
 
 }  // namespace

@@ -93,7 +93,11 @@ TEST(SamplePointCost, AnalyticJacobianMatchesNumericForEveryMetricAndType) {
     if (d < 2) continue;
     const int n = cell_num_nodes(type);
     std::set<std::string> seen;
-    for (const std::string& any_name : metric_names(d)) {
+    std::vector<std::string> names = metric_names(d);
+    // Weighted combinations (make_metric's "W1*NAME1+W2*NAME2") stack their parts' residuals.
+    names.push_back("0.7*shape_barrier+0.3*size_barrier");
+    names.push_back("shape+0.25*size");
+    for (const std::string& any_name : names) {
       std::unique_ptr<Metric> metric = make_metric(any_name, d);
       ASSERT_TRUE(metric) << any_name;
       const std::string name = metric->name();

@@ -55,6 +55,10 @@ class Metric {
 };
 
 // Builds a metric by name or alias for dimension d; nullptr when unknown (see metric_names()).
+// A weighted combination of two metrics is written "W1*NAME1+W2*NAME2" (weights >= 0, not both
+// 0, default 1; e.g. "0.7*shape_barrier+0.3*size_barrier", MFEM's mu_80 form): a
+// WeightedSumMetric (weighted_sum.h), barrier when either part is; its name() is the same text
+// with the canonical names.
 std::unique_ptr<Metric> make_metric(const std::string& name, int dim);
 // Every name make_metric() accepts for dimension d.
 std::vector<std::string> metric_names(int dim);
