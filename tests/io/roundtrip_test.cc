@@ -90,6 +90,38 @@ TEST(RoundTrip, TwoDimensionalMeshStaysTwoDimensional) {
   EXPECT_EQ(diff_meshes(medit, out, false), "");
 }
 
+// A flat mesh in the plane z = 5 (every z equal) is read as a 2D mesh with plane_z 5, so it is
+// optimized as a planar mesh, and every format writes it back at z = 5.
+TEST(RoundTrip, PlanarMeshOffZeroKeepsItsPlane) {
+  const std::string dir = test::temp_dir();
+  Mesh in = make_mesh({CellType::kTri3, CellType::kQuad4, CellType::kLine2}, 2);
+  in.plane_z = 5.25;
+  Mesh lifted;  // the same mesh stored in 3D, as a file holds it
+  lifted.space_dim = 3;
+  for (int v = 0; v < in.num_vertices(); ++v) {
+    const double x[3] = {in.vertex(v)[0], in.vertex(v)[1], 5.25};
+    lifted.add_vertex(x);
+  }
+  for (int c = 0; c < in.num_cells(); ++c)
+    lifted.add_cell(in.cell_types[c], in.cell(c), in.cell_region[c], in.cell_entity[c]);
+  for (const Mesh* source : {&in, &lifted}) {
+    for (const Case& c : kVolumeCases) {
+      Mesh out;
+      roundtrip(*source, c, dir, "plane", &out);
+      EXPECT_EQ(out.space_dim, 2) << name_of(c);
+      EXPECT_EQ(out.plane_z, 5.25) << name_of(c);
+      EXPECT_EQ(diff_meshes(in, out), "") << name_of(c);
+    }
+  }
+  Mesh medit = make_mesh({CellType::kTri3, CellType::kQuad4}, 2);
+  medit.plane_z = -3;
+  Mesh out;
+  roundtrip(medit, {"mesh", false, 0}, dir, "plane", &out);
+  EXPECT_EQ(out.space_dim, 2);
+  EXPECT_EQ(out.plane_z, -3);
+  EXPECT_EQ(diff_meshes(medit, out, false), "");
+}
+
 TEST(RoundTrip, SurfaceIn3DStaysThreeDimensional) {
   const std::string dir = test::temp_dir();
   const Mesh in = make_mesh({CellType::kTri3, CellType::kQuad4});

@@ -50,7 +50,8 @@ void finish_read(Mesh* mesh);
 
 // Coordinate k (0..2) of vertex v, 0 beyond space_dim: writers pad 2D meshes with z = 0.
 inline double coord(const Mesh& mesh, int v, int k) {
-  return k < mesh.space_dim ? mesh.coords[static_cast<std::size_t>(v) * mesh.space_dim + k] : 0.0;
+  return k < mesh.space_dim ? mesh.coords[static_cast<std::size_t>(v) * mesh.space_dim + k]
+                            : mesh.plane_z;
 }
 
 }  // namespace io

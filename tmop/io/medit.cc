@@ -177,7 +177,8 @@ void check_medit_writable(const Mesh& mesh) {
 }
 
 void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out) {
-  const int d = mesh.space_dim;
+  // A planar mesh off z = 0 is written in 3D, so its plane survives.
+  const int d = mesh.space_dim == 2 && mesh.plane_z != 0 ? 3 : mesh.space_dim;
   check_medit_writable(mesh);
   const DataArray* refs = nullptr;
   for (const DataArray& a : mesh.point_data)
@@ -195,7 +196,7 @@ void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out
   out->push_back('\n');
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     for (int k = 0; k < d; ++k) {
-      append_double(out, mesh.vertex(v)[k]);
+      append_double(out, coord(mesh, v, k));
       out->push_back(' ');
     }
     append_int(out, refs ? static_cast<std::int64_t>(refs->values[v]) : 0);

@@ -79,17 +79,20 @@ void finish_read(Mesh* mesh) {
   bool flat = true;
   for (CellType t : mesh->cell_types)
     if (cell_dim(t) > 2) flat = false;
-  // Planar when every z is 0 up to round-off: generators (gmsh's spline curves, say) leave z
-  // values of 1e-17 on meshes that are meant to lie in the plane z = 0. The test is relative to
-  // the mesh's extent, so the z values dropped are below 1e-12 of its size.
+  // Planar when every z is the same up to round-off: generators (gmsh's spline curves, say)
+  // leave z values of 1e-17 on meshes that are meant to lie in the plane z = 0. The test is
+  // relative to the mesh's extent, so the z differences dropped are below 1e-12 of its size. A
+  // plane z = c other than 0 is kept in plane_z (writers put it back).
   const std::size_t n = mesh->coords.size() / 3;
-  double extent = 0, zmax = 0;
+  const double z0 = n > 0 ? mesh->coords[2] : 0.0;
+  double extent = 0, zdev = 0;
   for (std::size_t v = 0; v < n; ++v) {
     extent = std::max({extent, std::abs(mesh->coords[3 * v]), std::abs(mesh->coords[3 * v + 1])});
-    zmax = std::max(zmax, std::abs(mesh->coords[3 * v + 2]));
+    zdev = std::max(zdev, std::abs(mesh->coords[3 * v + 2] - z0));
   }
-  if (!(zmax <= 1e-12 * extent) && zmax != 0.0) flat = false;
+  if (!(zdev <= 1e-12 * extent) && zdev != 0.0) flat = false;
   if (!flat) return;
+  mesh->plane_z = std::abs(z0) <= 1e-12 * extent ? 0.0 : z0;
   for (std::size_t v = 0; v < n; ++v) {
     mesh->coords[2 * v] = mesh->coords[3 * v];
     mesh->coords[2 * v + 1] = mesh->coords[3 * v + 1];

@@ -47,6 +47,7 @@ void Mesh::remove_lower_dimensional_cells() {
   const int d = dim();
   Mesh out;
   out.space_dim = space_dim;
+  out.plane_z = plane_z;
   out.coords = std::move(coords);
   out.point_data = std::move(point_data);
   std::vector<bool> keep(num_cells());

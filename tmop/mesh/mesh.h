@@ -33,6 +33,10 @@ struct DataArray {
 class Mesh {
  public:
   int space_dim = 3;  // 2 or 3
+  // space_dim 2: the plane z = plane_z the mesh lies in. Readers store a planar 2D mesh (every z
+  // the same) with space_dim 2 and its z here, and writers put it back, so a flat mesh at z = 5
+  // is optimized as a 2D mesh and written at z = 5.
+  double plane_z = 0;
   std::vector<double> coords;
 
   std::vector<CellType> cell_types;
