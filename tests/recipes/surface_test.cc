@@ -178,5 +178,61 @@ INSTANTIATE_TEST_SUITE_P(Spheres, SurfaceRecipe,
                            return std::string(info.param.name);
                          });
 
+// A flat quad grid tilted out of the z = 0 plane is a surface mesh (2D cells in 3D). Under a
+// fixed boundary (the recipes' default) its rim stays where it is and the interior slides in
+// its plane; with slide the rim slides along its straight sides too.
+TEST(SurfaceRim, FixedBoundaryKeepsTheRimOfATiltedPlane) {
+  const int n = 8;
+  const double c = std::cos(0.6), s = std::sin(0.6);
+  Mesh mesh;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      // A perturbed interior; the rim is straight (rectangle sides).
+      double x = double(i) / n, y = double(j) / n;
+      if (i > 0 && i < n && j > 0 && j < n) {
+        x += 0.3 / n * std::sin(7.0 * i + 3.0 * j);
+        y += 0.3 / n * std::cos(5.0 * i + 11.0 * j);
+      }
+      if ((i == 0 || i == n) && j > 0 && j < n) y += 0.2 / n * std::sin(3.0 * j);
+      if ((j == 0 || j == n) && i > 0 && i < n) x += 0.2 / n * std::sin(3.0 * i);
+      const double p[3] = {x, c * y, s * y};  // rotated about the x axis
+      mesh.add_vertex(p);
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::int32_t q[4] = {j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1,
+                                 (j + 1) * (n + 1) + i};
+      mesh.add_cell(CellType::kQuad4, q);
+    }
+  ASSERT_EQ(mesh.space_dim, 3);
+  auto on_rim = [&](int v) {
+    const int i = v % (n + 1), j = v / (n + 1);
+    return i == 0 || j == 0 || i == n || j == n;
+  };
+  for (bool slide : {false, true}) {
+    Mesh m = mesh;
+    UntangleOptions opt;  // recipe auto: untangle if needed, then shape
+    opt.slide = slide;
+    RecipeResult result;
+    Status st = untangle(&m, opt, &result);
+    ASSERT_TRUE(st.ok()) << st.message();
+    double rim_move = 0, interior_move = 0, off_plane = 0;
+    for (int v = 0; v < m.num_vertices(); ++v) {
+      double d2 = 0;
+      for (int a = 0; a < 3; ++a) d2 += std::pow(m.vertex(v)[a] - mesh.vertex(v)[a], 2);
+      (on_rim(v) ? rim_move : interior_move) =
+          std::max(on_rim(v) ? rim_move : interior_move, std::sqrt(d2));
+      off_plane = std::max(off_plane, std::abs(-s * m.vertex(v)[1] + c * m.vertex(v)[2]));
+    }
+    EXPECT_GT(interior_move, 1e-3) << "slide " << slide;
+    EXPECT_LT(off_plane, 1e-12) << "slide " << slide;
+    if (slide) {
+      EXPECT_GT(rim_move, 1e-3);
+    } else {
+      EXPECT_EQ(rim_move, 0.0);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tmop

@@ -20,8 +20,11 @@ Status resolve_recipe_geometry(const Mesh& mesh, bool slide, const BoundaryOptio
                                const RecipeGeometry** out) {
   *out = given;
   if (given || !(slide || is_surface_mesh(mesh))) return Status::Ok();
+  // The recipe's slide decides (BoundaryOptions::slide defaults to true, so or-ing it in made a
+  // surface mesh's rim slide under a fixed boundary): a surface mesh's interior still slides on
+  // its surface, its rim stays (boundary_constraints.h).
   BoundaryOptions b = options;
-  b.slide = slide || b.slide;
+  b.slide = slide;
   Status s = build_recipe_geometry(mesh, b, own);
   if (s.ok()) *out = own;
   return s;
