@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/topology.h"
@@ -76,6 +77,45 @@ TEST(HighOrderUntangle, GearTri6IsCertifiedValidWithBoundaryOnTheCurve) {
               static_cast<int>(after.inverted_cells), result.certified, mesh.num_elements(),
               result.after.min_quality);
   std::system(("rm -rf " + std::string(dir)).c_str());
+}
+
+// Quadratic surface cells are certified in their own plane (as tmop_quality does): a valid tri6
+// grid tilted so that its cells face -z (a surface mesh in 3D) passes the recipe's final
+// certificate. It used to be judged by its x-y projection: every cell "inverted", exit 1.
+TEST(HighOrderSurface, TiltedTri6GridIsCertifiedInItsPlane) {
+  const int n = 6;
+  const double c = std::cos(2.1), s = std::sin(2.1);  // 120 degrees about the x axis
+  Mesh mesh;
+  auto add = [&](double x, double y) {
+    x += 0.04 * std::sin(9 * x + 4 * y) * x * (1 - x) * y * (1 - y) * 16;
+    const double p[3] = {x, c * y, s * y};
+    return mesh.add_vertex(p);
+  };
+  // Corner nodes on a (2n+1)^2 lattice: corners at even indices, mid-edge nodes in between.
+  std::vector<int> id((2 * n + 1) * (2 * n + 1));
+  for (int j = 0; j <= 2 * n; ++j)
+    for (int i = 0; i <= 2 * n; ++i) id[j * (2 * n + 1) + i] = add(i / (2.0 * n), j / (2.0 * n));
+  auto at = [&](int i, int j) { return id[j * (2 * n + 1) + i]; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int I = 2 * i, J = 2 * j;
+      const std::int32_t a[6] = {at(I, J),     at(I + 2, J),     at(I + 2, J + 2),
+                                 at(I + 1, J), at(I + 2, J + 1), at(I + 1, J + 1)};
+      const std::int32_t b[6] = {at(I, J),         at(I + 2, J + 2), at(I, J + 2),
+                                 at(I + 1, J + 1), at(I + 1, J + 2), at(I, J + 1)};
+      mesh.add_cell(CellType::kTri6, a);
+      mesh.add_cell(CellType::kTri6, b);
+    }
+  ASSERT_EQ(mesh.space_dim, 3);
+  const QualityReport before = compute_quality(mesh);
+  ASSERT_EQ(before.certified_cells, 2 * n * n);
+  UntangleOptions opt;
+  RecipeResult result;
+  Status st = untangle(&mesh, opt, &result);
+  ASSERT_TRUE(st.ok()) << st.message();
+  EXPECT_EQ(result.certified, 2 * n * n);
+  EXPECT_EQ(result.uncertified, 0);
+  EXPECT_EQ(compute_quality(mesh).certified_cells, 2 * n * n);
 }
 
 }  // namespace

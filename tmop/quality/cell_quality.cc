@@ -145,6 +145,21 @@ void project_to_plane(int num_nodes, const double* nodes, const Vec3& n, double*
   }
 }
 
+// The normal that orients a 2D cell: `up` when given, else the corners' Newell normal; a
+// bow-tie quad has a zero Newell normal and is oriented by its first corner instead, so that it
+// is measured in its own plane and shows up as inverted.
+Vec3 plane_normal(int num_corners, const double* nodes, const double* up) {
+  if (up != nullptr) return Vec3(up);
+  double sum_l2 = 0;
+  for (int i = 0; i < num_corners; ++i)
+    sum_l2 += (node(nodes, (i + 1) % num_corners) - node(nodes, i)).squaredNorm();
+  const Vec3 own = polygon_normal(num_corners, nodes);
+  if (own.squaredNorm() > 1e-24 * sum_l2 * sum_l2) return own.normalized();
+  const Vec3 corner =
+      (node(nodes, 1) - node(nodes, 0)).cross(node(nodes, num_corners - 1) - node(nodes, 0));
+  return corner.squaredNorm() > 0 ? Vec3(corner.normalized()) : Vec3(0, 0, 1);
+}
+
 template <int D>
 using Mat = Eigen::Matrix<double, D, D>;
 template <int D>
@@ -256,19 +271,7 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
   if (d == 2) {
     const Vec3 own = polygon_normal(info.num_corners, nodes);
     if (options.angles) polygon_angles(info.num_corners, nodes, own, &q);
-    Vec3 n(0, 0, 1);
-    if (up != nullptr) {
-      n = Vec3(up);
-    } else if (own.squaredNorm() > 1e-24 * sum_l2 * sum_l2) {
-      n = own.normalized();
-    } else {
-      // A bow-tie quad has a zero Newell normal: orient it by its first corner instead, so that
-      // it is measured in its own plane and shows up as inverted.
-      const Vec3 corner = (node(nodes, 1) - node(nodes, 0))
-                              .cross(node(nodes, info.num_corners - 1) - node(nodes, 0));
-      if (corner.squaredNorm() > 0) n = corner.normalized();
-    }
-    project_to_plane(info.num_nodes, nodes, n, projected);
+    project_to_plane(info.num_nodes, nodes, plane_normal(info.num_corners, nodes, up), projected);
     p = projected;
   } else if (info.linear == CellType::kTet4 && options.angles) {
     tet_dihedral_angles(nodes, &q);
@@ -318,6 +321,11 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
     q.certified = std::all_of(coefficients, coefficients + n, [](double c) { return c > 0; });
   }
   return q;
+}
+
+void cell_plane_coordinates(CellType type, const double* nodes, const double* up, double* p) {
+  const CellInfo& info = cell_info(type);
+  project_to_plane(info.num_nodes, nodes, plane_normal(info.num_corners, nodes, up), p);
 }
 
 }  // namespace tmop

@@ -63,6 +63,11 @@ struct CellQuality {
 CellQuality cell_quality(CellType type, const double* nodes, const double* up,
                          const QualityOptions& options = {});
 
+// A 2D cell (nodes: cell_num_nodes(type) x 3) in the frame of its plane, exactly as cell_quality
+// measures it (`up` as there): 2 coordinates per node into p, positively oriented when the cell
+// turns counterclockwise about the normal. For certificates and measures of surface cells.
+void cell_plane_coordinates(CellType type, const double* nodes, const double* up, double* p);
+
 }  // namespace tmop
 
 #endif  // TMOP_QUALITY_CELL_QUALITY_H_

@@ -5,6 +5,7 @@
 #include "tmop/element/bezier.h"
 #include "tmop/element/sample_points.h"
 #include "tmop/metric/untangle.h"
+#include "tmop/quality/cell_quality.h"
 #include "tmop/quality/jacobian_certificate.h"
 #include "tmop/quality/quality_options.h"
 
@@ -36,8 +37,15 @@ int certify(const Mesh& mesh, SampleSet* extra, std::vector<int>* uncertified,
     ++count;
     const CellType t = mesh.cell_type(c);
     const int n = mesh.cell_size(c);
-    for (int i = 0; i < n; ++i)
-      for (int a = 0; a < d; ++a) x[i * d + a] = mesh.vertex(mesh.cell(c)[i])[a];
+    if (mesh.space_dim == d) {
+      for (int i = 0; i < n; ++i)
+        for (int a = 0; a < d; ++a) x[i * d + a] = mesh.vertex(mesh.cell(c)[i])[a];
+    } else {  // a surface cell: in its own plane, as tmop_quality certifies it
+      double nodes[kMaxCellNodes * 3];
+      for (int i = 0; i < n; ++i)
+        for (int a = 0; a < 3; ++a) nodes[i * 3 + a] = mesh.vertex(mesh.cell(c)[i])[a];
+      cell_plane_coordinates(t, nodes, nullptr, x);
+    }
     // The depth tmop_quality uses, so that both report the same cells as proven.
     const JacobianSign sign = certify_jacobian(t, x, QualityOptions().bezier_subdivision);
     if (sign == JacobianSign::kPositive) continue;
