@@ -15,6 +15,8 @@
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
+#include <sys/stat.h>
+#include <unistd.h>
 #include <glog/logging.h>
 
 #include <algorithm>
@@ -137,6 +139,28 @@ int fail(int code, const std::string& message) {
   return code;
 }
 
+// True when both paths name one existing file (hard links and symlinks included).
+bool same_file(const std::string& a, const std::string& b) {
+  struct stat sa, sb;
+  return !a.empty() && !b.empty() && ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 &&
+         sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+// The checks of writing `path` without writing: its directory exists and is writable, and it is
+// not a directory. Empty when fine, else the one-line reason.
+std::string unwritable(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  struct stat st;
+  if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+    return path + ": cannot write: directory " + dir + " does not exist";
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    return path + ": cannot write: directory " + dir + " is not writable";
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    return path + ": cannot write: it is a directory";
+  return "";
+}
+
 bool write_text_atomically(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
   {
@@ -173,8 +197,10 @@ tmop::QualityReport print_quality(const char* label, const tmop::Mesh& mesh,
 
 // The run report: the recipe's record plus tmop_quality's report of the input and the result
 // (the same keys as tmop_quality --json and tmop_compare --json, docs/quality.md).
+// written: whether --output was written (null otherwise); status: "ok" or the recipe's failure;
+// after: the result as written (or, when nothing was written, as the recipe left it).
 std::string run_report(const tmop::RecipeResult& result, const tmop::QualityReport& before,
-                       const tmop::QualityReport& after) {
+                       const tmop::QualityReport& after, bool written, const std::string& status) {
   auto indent = [](std::string text) {
     while (!text.empty() && text.back() == '\n') text.pop_back();
     std::string out;
@@ -182,7 +208,8 @@ std::string run_report(const tmop::RecipeResult& result, const tmop::QualityRepo
     return out;
   };
   return "{\n  \"input\": " + tmop::json_string(FLAGS_input) +
-         ",\n  \"output\": " + tmop::json_string(FLAGS_output) +
+         ",\n  \"output\": " + (written ? tmop::json_string(FLAGS_output) : "null") +
+         ",\n  \"status\": " + tmop::json_string(status) +
          ",\n  \"run\": " + tmop::recipe_json(result) +
          ",\n  \"quality_before\": " + indent(tmop::quality_json(before)) +
          ",\n  \"quality_after\": " + indent(tmop::quality_json(after)) + "\n}";
@@ -216,8 +243,21 @@ int main(int argc, char** argv) {
     std::printf("weighted combinations of two: W1*NAME1+W2*NAME2 (weights >= 0, default 1)\n");
     return 0;
   }
+  if (argc > 1)
+    return fail(2, std::string("unexpected argument '") + argv[1] +
+                       "' (every option is a --flag=value; see --help)");
   if (FLAGS_input.empty() || FLAGS_output.empty())
     return fail(2, "--input and --output are required (see --help)");
+  // Inputs are never modified: an output or report that is one of them is refused.
+  for (const std::string* in : {&FLAGS_input, &FLAGS_reference, &FLAGS_moved})
+    for (const std::string* out : {&FLAGS_output, &FLAGS_report})
+      if (same_file(*in, *out))
+        return fail(2, *out + ": is the input " + *in +
+                           " (tmop never modifies its inputs: write to another file)");
+  if (!FLAGS_report.empty()) {
+    const std::string why = unwritable(FLAGS_report);
+    if (!why.empty()) return fail(2, why);
+  }
   const std::string recipes[] = {"auto",       "shape",    "untangle", "surface", "equal_edge",
                                  "size_adapt", "preserve", "laplace",  "sliver",  "high_order"};
   if (std::find(std::begin(recipes), std::end(recipes), FLAGS_recipe) == std::end(recipes))
@@ -254,6 +294,11 @@ int main(int argc, char** argv) {
                        "' (known: ideal_unit, equal_size, local_size, size_field, reference, "
                        "lambda_identity, composed)");
   opt.target.size_field = FLAGS_size_field;
+  if (target == "reference" && FLAGS_reference.empty())
+    return fail(2, "--target=reference needs --reference=FILE (the mesh whose Jacobians are the "
+                   "targets)");
+  if (target == "size_field" && FLAGS_size_field.empty())
+    return fail(2, "--target=size_field needs --size_field=NAME (a point-data array of the input)");
   {
     const char* factor_flags[] = {"target_size", "target_orientation", "target_shape",
                                   "target_skew", "target_aspect"};
@@ -437,27 +482,42 @@ int main(int argc, char** argv) {
     u.shape = opt;
     s = untangle(&mesh, u, &result);
   }
-  for (const StageResult& st : result.stages)
-    std::printf("stage %s: objective %.6g -> %.6g in %d iterations (%d solves), %.2f s (%s)\n",
-                st.name.c_str(), st.initial_objective, st.final_objective, st.iterations, st.solves,
-                st.seconds, st.termination.c_str());
+  for (const StageResult& st : result.stages) {
+    // Under a power the solver minimises the power objective, which can fall while the mean
+    // metric (the objective printed first) rises: print both.
+    char power[96] = "";
+    if (st.power_scale > 0 && st.history.size() > 1)
+      std::snprintf(power, sizeof power, " (minimised power objective %.6g -> %.6g)",
+                    st.history.front().solver_objective, st.history.back().solver_objective);
+    std::printf("stage %s: objective %.6g -> %.6g%s in %d iterations (%d solves), %.2f s (%s)\n",
+                st.name.c_str(), st.initial_objective, st.final_objective, power, st.iterations,
+                st.solves, st.seconds, st.termination.c_str());
+  }
   const Status recipe_status = s;
-  if (!recipe_status.ok() && !FLAGS_write_on_failure)
-    return fail(1, FLAGS_input + ": " + recipe_status.message());
   std::string written_note;
   if (!recipe_status.ok()) {
-    const IterationRecord now = measure_mesh(mesh, opt.rule);
-    if (now.inverted >= before.inverted && mesh.coords != input_copy.coords) {
+    // Inverted counts as the quality report counts them (quadratic cells by their certificate).
+    const std::int64_t now = compute_quality(mesh).inverted_cells;
+    const std::int64_t was = quality_before.inverted_cells;
+    if (!FLAGS_write_on_failure) {
+      written_note = "nothing written: the result has " + std::to_string(now) +
+                     " inverted cells, the input " + std::to_string(was);
+    } else if (now >= was && mesh.coords != input_copy.coords) {
       mesh = input_copy;
-      written_note = "input written unchanged: the result had " + std::to_string(now.inverted) +
-                     " inverted cells, the input " + std::to_string(before.inverted);
+      written_note = "input written unchanged: the result had " + std::to_string(now) +
+                     " inverted cells, the input " + std::to_string(was);
     } else {
       written_note = mesh.coords == input_copy.coords
                          ? "input written unchanged"
-                         : "best mesh written: " + std::to_string(now.inverted) +
-                               " inverted cells, the input had " + std::to_string(before.inverted);
+                         : "best mesh written: " + std::to_string(now) +
+                               " inverted cells, the input had " + std::to_string(was);
     }
+    result.after = measure_mesh(mesh, opt.rule);  // the mesh written (or left), not the recipe's
   }
+  const bool write = recipe_status.ok() || FLAGS_write_on_failure;
+  const std::string status = recipe_status.ok()
+                                 ? std::string("ok")
+                                 : recipe_status.message() + " (" + written_note + ")";
   QualityReport quality_after = print_quality("after:", mesh, !mesh.cell_data.empty());
   quality_after.opposite_convention = flipped;  // written back in the input's convention
   if (result.layer_cells >= 0)
@@ -471,11 +531,15 @@ int main(int argc, char** argv) {
   if (refresh_quality_fields(quality_after, &mesh))
     std::printf("quality fields of the input replaced by the result's\n");
   if (flipped) reorient(&mesh);
-  s = write_mesh(FLAGS_output, mesh, wopt);
-  if (!s.ok()) return fail(2, s.message());
-  std::printf("wrote %s\n", FLAGS_output.c_str());
+  if (write) {
+    s = write_mesh(FLAGS_output, mesh, wopt);
+    if (!s.ok()) return fail(2, s.message());
+    std::printf("wrote %s\n", FLAGS_output.c_str());
+  }
+  // The report is written on failure too: that is when it is needed.
   if (!FLAGS_report.empty() &&
-      !write_text_atomically(FLAGS_report, run_report(result, quality_before, quality_after)))
+      !write_text_atomically(FLAGS_report,
+                             run_report(result, quality_before, quality_after, write, status)))
     return fail(2, FLAGS_report + ": cannot write the report");
   if (!recipe_status.ok())
     return fail(1, FLAGS_input + ": " + recipe_status.message() + " (" + written_note + ")");

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -171,6 +172,57 @@ TEST_F(TmopOptimizeTool, ReadsTmopQualityOutputAndRefreshesItsQualityFields) {
   ASSERT_TRUE(read_mesh(dir_ + "/oq.vtu", &result_quality).ok());
   EXPECT_GT(min_of(result, "mean_ratio"), min_of(with_fields, "mean_ratio"));
   EXPECT_EQ(min_of(result, "mean_ratio"), min_of(result_quality, "mean_ratio"));
+}
+
+// Inputs are never modified; usage errors are refused before any work, exit 2, one line.
+TEST_F(TmopOptimizeTool, OutputOrReportThatIsAnInputAndBadPathsAreRefusedFirst) {
+  const std::string in = dir_ + "/grid.msh";
+  ASSERT_EQ(std::system(("cp " + in + " " + dir_ + "/copy.msh && ln -s " + in + " " + dir_ +
+                         "/link.msh")
+                            .c_str()),
+            0);
+  std::ifstream before(in, std::ios::binary);
+  const std::string original((std::istreambuf_iterator<char>(before)), {});
+  for (const std::string& args :
+       {"--output=" + in, "--output=" + dir_ + "/link.msh",
+        "--output=" + dir_ + "/o.msh --report=" + in, "--output=" + dir_ + "/o.msh stray",
+        "--output=" + dir_ + "/o.msh --report=" + dir_ + "/no/such/dir/r.json",
+        "--output=" + dir_ + "/o.msh --target=reference",
+        "--output=" + dir_ + "/o.msh --target=size_field"}) {
+    std::string err;
+    EXPECT_EQ(run("--input=" + in + " " + args, &err), 2) << args << ": " << err;
+    EXPECT_EQ(lines(err), 1) << args << ": " << err;
+    EXPECT_NE(std::system(("test -e " + dir_ + "/o.msh").c_str()), 0) << args;
+  }
+  std::ifstream after(in, std::ios::binary);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(after)), {}), original);
+}
+
+// A failing run still writes its report: output null, the failure in "status", and "after" the
+// mesh as it is (here nothing could move).
+TEST_F(TmopOptimizeTool, FailedRunWritesItsReport) {
+  Mesh m = testing_grid::grid(CellType::kTri3, 1);
+  std::swap(m.cell(0)[1], m.cell(0)[2]);
+  const std::string in = dir_ + "/folded.msh", report = dir_ + "/r.json";
+  ASSERT_TRUE(write_mesh(in, m).ok());
+  std::string err;
+  EXPECT_EQ(run("--input=" + in + " --output=" + dir_ + "/o.msh --report=" + report, &err), 1);
+  std::ifstream f(report);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  const std::string json = ss.str();
+  EXPECT_NE(json.find("\"output\": null"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"status\": \"cannot untangle"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"after\": {\"min_quality\": -"), std::string::npos) << json;
+  EXPECT_EQ(run("--input=" + in + " --output=" + dir_ + "/o.msh --report=" + report +
+                    " --write_on_failure",
+                &err),
+            1);
+  std::ifstream g(report);
+  std::stringstream tt;
+  tt << g.rdbuf();
+  EXPECT_NE(tt.str().find("\"output\": \"" + dir_ + "/o.msh\""), std::string::npos) << tt.str();
+  EXPECT_NE(tt.str().find("\"inverted\": 1"), std::string::npos) << tt.str();
 }
 
 }  // namespace
