@@ -15,9 +15,9 @@
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
+#include <glog/logging.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include <glog/logging.h>
 
 #include <algorithm>
 #include <chrono>
@@ -295,8 +295,9 @@ int main(int argc, char** argv) {
                        "lambda_identity, composed)");
   opt.target.size_field = FLAGS_size_field;
   if (target == "reference" && FLAGS_reference.empty())
-    return fail(2, "--target=reference needs --reference=FILE (the mesh whose Jacobians are the "
-                   "targets)");
+    return fail(2,
+                "--target=reference needs --reference=FILE (the mesh whose Jacobians are the "
+                "targets)");
   if (target == "size_field" && FLAGS_size_field.empty())
     return fail(2, "--target=size_field needs --size_field=NAME (a point-data array of the input)");
   {
@@ -515,9 +516,8 @@ int main(int argc, char** argv) {
     result.after = measure_mesh(mesh, opt.rule);  // the mesh written (or left), not the recipe's
   }
   const bool write = recipe_status.ok() || FLAGS_write_on_failure;
-  const std::string status = recipe_status.ok()
-                                 ? std::string("ok")
-                                 : recipe_status.message() + " (" + written_note + ")";
+  const std::string status =
+      recipe_status.ok() ? std::string("ok") : recipe_status.message() + " (" + written_note + ")";
   QualityReport quality_after = print_quality("after:", mesh, !mesh.cell_data.empty());
   quality_after.opposite_convention = flipped;  // written back in the input's convention
   if (result.layer_cells >= 0)

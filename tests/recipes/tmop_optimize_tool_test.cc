@@ -177,10 +177,10 @@ TEST_F(TmopOptimizeTool, ReadsTmopQualityOutputAndRefreshesItsQualityFields) {
 // Inputs are never modified; usage errors are refused before any work, exit 2, one line.
 TEST_F(TmopOptimizeTool, OutputOrReportThatIsAnInputAndBadPathsAreRefusedFirst) {
   const std::string in = dir_ + "/grid.msh";
-  ASSERT_EQ(std::system(("cp " + in + " " + dir_ + "/copy.msh && ln -s " + in + " " + dir_ +
-                         "/link.msh")
-                            .c_str()),
-            0);
+  ASSERT_EQ(
+      std::system(("cp " + in + " " + dir_ + "/copy.msh && ln -s " + in + " " + dir_ + "/link.msh")
+                      .c_str()),
+      0);
   std::ifstream before(in, std::ios::binary);
   const std::string original((std::istreambuf_iterator<char>(before)), {});
   for (const std::string& args :

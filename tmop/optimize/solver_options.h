@@ -69,8 +69,11 @@ struct SolverOptions {
   // accepted steps (part mesh: stopped at 0.2006 instead of converging to 0.1963).
   bool nonmonotonic_steps = false;
 
-  int max_iterations = 200;  // outer (Ceres) iterations
-  double max_seconds = 1e9;  // wall-clock cap for the stage
+  // Outer (Ceres) iterations and wall-clock seconds of the whole stage, over all its solves
+  // (untangling's eps rounds, surface frame rounds; surface rounds under a power may use 4x the
+  // iterations). Untangling rounds are also capped at StageSpec::untangle_round_iterations each.
+  int max_iterations = 200;
+  double max_seconds = 1e9;
   // Stop when the objective decreases by less than this fraction of itself in a step. 1e-5 ends
   // within ~1e-4 of the converged objective (100k tets: 9 iterations, mean mu_303 0.191943 vs
   // 0.191929 fully converged); 1e-7 needs ~3x the iterations, spent mostly on the few worst

@@ -619,6 +619,21 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   so.callbacks.push_back(&callback);
 
   ceres::Solver::Summary summary;
+  // The stage's caps hold over all its solves (untangling and surface frame rounds): each solve
+  // gets what is left of the iterations and the time. Returns false when nothing is left.
+  // Surface frame rounds under a power may use 4x the iterations (surface_budget below).
+  const int stage_iterations =
+      spec.solver.max_iterations * (surface && !spec.untangle && powered ? 4 : 1);
+  auto budget = [&]() {
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const int iterations_left = stage_iterations - result->iterations;
+    if (result->solves > 0 && (iterations_left <= 0 || elapsed >= spec.solver.max_seconds))
+      return false;
+    so.max_num_iterations = std::min(so.max_num_iterations, std::max(iterations_left, 0));
+    so.max_solver_time_in_seconds = std::max(spec.solver.max_seconds - elapsed, 1e-9);
+    return true;
+  };
   auto solve = [&]() {
     StageResult::Times& t = result->times;
     if (result->solves == 0)
@@ -696,6 +711,8 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
         untangle_rounds = round + 1;
         metrics.push_back(std::make_unique<UntangleMetric>(d, eps, theta));
         for (SamplePointCost& cost : costs) cost.set_metric(0, metrics.back().get());
+        so.max_num_iterations = spec.untangle_round_iterations;
+        if (!budget()) break;
         if (!solve()) return fail("solver failed: " + summary.message);
         result->final_eps = eps;
         const double det_min = min_target_det(*mesh, point_cell, G[0], nullptr, frames);
@@ -714,6 +731,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       so.max_num_iterations = spec.solver.max_iterations;
       if (surface_rounds) so.max_num_iterations = std::min(so.max_num_iterations, round_cap);
       so.function_tolerance = spec.solver.function_tolerance;
+      if (surface_rounds && !budget()) break;
       if (!solve()) return fail("solver failed: " + summary.message);
       if (surface_rounds) surface_iterations += static_cast<int>(summary.iterations.size()) - 1;
     }
