@@ -17,7 +17,6 @@
 #endif
 #include <glog/logging.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -146,21 +145,6 @@ bool same_file(const std::string& a, const std::string& b) {
          sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
-// The checks of writing `path` without writing: its directory exists and is writable, and it is
-// not a directory. Empty when fine, else the one-line reason.
-std::string unwritable(const std::string& path) {
-  const std::size_t slash = path.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash + 1);
-  struct stat st;
-  if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
-    return path + ": cannot write: directory " + dir + " does not exist";
-  if (::access(dir.c_str(), W_OK | X_OK) != 0)
-    return path + ": cannot write: directory " + dir + " is not writable";
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    return path + ": cannot write: it is a directory";
-  return "";
-}
-
 bool write_text_atomically(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
   {
@@ -255,8 +239,8 @@ int main(int argc, char** argv) {
         return fail(2, *out + ": is the input " + *in +
                            " (tmop never modifies its inputs: write to another file)");
   if (!FLAGS_report.empty()) {
-    const std::string why = unwritable(FLAGS_report);
-    if (!why.empty()) return fail(2, why);
+    const Status place = check_output_path(FLAGS_report);
+    if (!place.ok()) return fail(2, place.message());
   }
   const std::string recipes[] = {"auto",       "shape",    "untangle", "surface", "equal_edge",
                                  "size_adapt", "preserve", "laplace",  "sliver",  "high_order"};

@@ -172,19 +172,25 @@ void check_writable_or_throw(const std::string& path, const Mesh& mesh,
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());
   }
+  const Status place = check_output_path(path);
+  if (!place.ok()) throw Error(place.message());
+}
+
+}  // namespace
+
+Status check_output_path(const std::string& path) {
   // The temporary file goes next to the output, so its directory must exist and be writable.
   const std::size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash + 1);
   struct stat st;
   if (::stat(dir.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
-    throw Error(path + ": cannot write: directory " + dir + " does not exist");
+    return Status::Failure(path + ": cannot write: directory " + dir + " does not exist");
   if (::access(dir.c_str(), W_OK | X_OK) != 0)
-    throw Error(path + ": cannot write: directory " + dir + " is not writable");
+    return Status::Failure(path + ": cannot write: directory " + dir + " is not writable");
   if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw Error(path + ": cannot write: it is a directory");
+    return Status::Failure(path + ": cannot write: it is a directory");
+  return Status::Ok();
 }
-
-}  // namespace
 
 Status check_writable(const std::string& path, const Mesh& mesh, const WriteOptions& options) {
   try {

@@ -62,6 +62,9 @@ struct SurfaceRepair {
 Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair);
 Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions& options = {});
 Status check_writable(const std::string& path, const Mesh& mesh, const WriteOptions& options = {});
+// The part of check_writable that is about the place, for any output file (a report, say): the
+// directory exists and is writable (the temporary file goes there) and path is not a directory.
+Status check_output_path(const std::string& path);
 
 }  // namespace tmop
 
