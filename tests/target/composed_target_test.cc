@@ -537,5 +537,90 @@ TEST(ParseTargetFactor, EverySourceAndItsErrors) {
   EXPECT_FALSE(parse_target_factor(FactorKind::kOrientation, "angle:1,2", &f).ok());
 }
 
+// --- the smooth aspect (smoothed_aspect.h) ---------------------------------------------------
+
+TargetSpec smooth_aspect() {
+  return composed(FactorSource::kInitial, FactorSource::kInitial, FactorSource::kInitial,
+                  FactorSource::kSmooth);
+}
+
+TEST(SmoothAspect, AffineCellsKeepTheirInitialAspect) {
+  // One affine cell: every point's metric is the same, so the smooth aspect is the initial one.
+  for (CellType t : kAllTypes) {
+    SCOPED_TRACE(cell_name(t));
+    const int d = cell_dim(t);
+    const Mesh m = affine_cell(t, general_matrix(d));
+    const std::vector<double> W = targets(m, smooth_aspect()), Wi = targets(m, all_initial());
+    ASSERT_EQ(W.size(), Wi.size());
+    for (std::size_t p = 0; p < W.size() / (d * d); ++p)
+      expect_near(ratios(at(W, d, p), d), ratios(at(Wi, d, p), d), 1e-12);
+  }
+}
+
+// An n x n grid of quads on [0, sx] x [0, sy], vertex (i, j) at index j (n + 1) + i.
+Mesh quad_grid(int n, double sx, double sy) {
+  Mesh m;
+  m.space_dim = 2;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x[2] = {sx * i / n, sy * j / n};
+      m.add_vertex(x);
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::int32_t q[4] = {j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1,
+                                 (j + 1) * (n + 1) + i};
+      m.add_cell(CellType::kQuad4, q);
+    }
+  return m;
+}
+
+TEST(SmoothAspect, AUniformStretchIsKeptAndANudgedVertexIsNot) {
+  // A 6 x 6 grid stretched 4:1: every target keeps the 4:1 ratio.
+  Mesh m = quad_grid(6, 4, 1);
+  std::vector<double> W = targets(m, smooth_aspect());
+  for (std::size_t p = 0; p < W.size() / 4; ++p) expect_near(ratios(at(W, 2, p), 2), {0.25}, 1e-12);
+  // A square grid with one interior vertex moved by 0.4 of the spacing along x: the cells
+  // around it are 1.4:1 and 0.6:1 initially; the smooth targets are much nearer 1:1.
+  m = quad_grid(6, 1, 1);
+  m.vertex(3 * 7 + 3)[0] += 0.4 / 6;
+  W = targets(m, smooth_aspect());
+  const std::vector<double> Wi = targets(m, all_initial());
+  double worst_smooth = 0, worst_initial = 0;
+  for (std::size_t p = 0; p < W.size() / 4; ++p) {
+    worst_smooth = std::max(worst_smooth, std::abs(std::log(ratios(at(W, 2, p), 2)[0])));
+    worst_initial = std::max(worst_initial, std::abs(std::log(ratios(at(Wi, 2, p), 2)[0])));
+  }
+  EXPECT_GT(worst_initial, std::log(1.39));
+  EXPECT_LT(worst_smooth, 0.5 * worst_initial);
+}
+
+TEST(SmoothAspect, RotatingTheMeshChangesNoRatio) {
+  Mesh m = quad_grid(5, 3, 1);
+  m.vertex(2 * 6 + 2)[1] += 0.05;
+  Mesh r = m;
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  for (int v = 0; v < r.num_vertices(); ++v) {
+    const double x = r.vertex(v)[0], y = r.vertex(v)[1];
+    r.vertex(v)[0] = c * x - s * y + 2;
+    r.vertex(v)[1] = s * x + c * y - 1;
+  }
+  const std::vector<double> W = targets(m, smooth_aspect()), Wr = targets(r, smooth_aspect());
+  for (std::size_t p = 0; p < W.size() / 4; ++p)
+    expect_near(ratios(at(Wr, 2, p), 2), ratios(at(W, 2, p), 2), 1e-12);
+}
+
+TEST(SmoothAspect, IsASourceOfTheAspectOnly) {
+  const Mesh m = affine_cell(CellType::kQuad4, {1, 0, 0, 1});
+  TargetSpec spec;
+  spec.type = TargetType::kComposed;
+  spec.composed.skew.source = FactorSource::kSmooth;
+  expect_contains(build_error(m, spec), "'smooth' is a source of the aspect only");
+  TargetFactor f;
+  EXPECT_TRUE(parse_target_factor(FactorKind::kAspect, "smooth", &f).ok());
+  EXPECT_EQ(f.source, FactorSource::kSmooth);
+  EXPECT_FALSE(parse_target_factor(FactorKind::kSize, "smooth", &f).ok());
+}
+
 }  // namespace
 }  // namespace tmop

@@ -10,6 +10,7 @@
 #include "tmop/element/shape.h"
 #include "tmop/mesh/mesh.h"
 #include "tmop/target/target.h"
+#include "tmop/target/smoothed_aspect.h"
 #include "tmop/target/target_factors.h"
 
 namespace tmop {
@@ -151,6 +152,8 @@ Status parse_target_factor(FactorKind kind, const std::string& text, TargetFacto
     f.source = FactorSource::kIdeal;
   } else if (text == "initial") {
     f.source = FactorSource::kInitial;
+  } else if (kind == FactorKind::kAspect && text == "smooth") {
+    f.source = FactorSource::kSmooth;
   } else if (kind == FactorKind::kSize && text == "equal") {
     f.source = FactorSource::kMeanSize;
   } else if (text.rfind("field:", 0) == 0 && text.size() > 6) {
@@ -178,7 +181,7 @@ Status parse_target_factor(FactorKind kind, const std::string& text, TargetFacto
         known = "ideal, initial, field:NAME or angles in degrees";
         break;
       case FactorKind::kAspect:
-        known = "ideal, initial, field:NAME or relative lengths";
+        known = "ideal, initial, smooth, field:NAME or relative lengths";
         break;
     }
     return Status::Failure(std::string(factor_kind_name(kind)) + " source '" + text + "' is not " +
@@ -195,7 +198,7 @@ struct Resolved {
   const TargetFactor* factors[kNumKinds];
   const DataArray* fields[kNumKinds] = {nullptr, nullptr, nullptr, nullptr};
   TargetFactors constants;  // the constant factors, converted
-  bool need_initial = false, need_shape = false, need_mean = false;
+  bool need_initial = false, need_shape = false, need_mean = false, need_smooth = false;
 };
 
 Status resolve(const Mesh& mesh, const TargetSpec& spec, Resolved* r) {
@@ -230,6 +233,11 @@ Status resolve(const Mesh& mesh, const TargetSpec& spec, Resolved* r) {
         break;
       case FactorSource::kInitial:
         r->need_initial = true;
+        break;
+      case FactorSource::kSmooth:
+        if (kind != FactorKind::kAspect)
+          return failure(kind, "'smooth' is a source of the aspect only");
+        r->need_smooth = true;
         break;
       case FactorSource::kConstant:
         if (static_cast<int>(f.value.size()) != n)
@@ -285,6 +293,12 @@ Status build_composed_targets(const Mesh& mesh, const SampleSet& points, const T
       return failure(FactorKind::kSize, "the mean size is not positive (degenerate mesh?)");
   }
 
+  SmoothedAspect smooth;
+  if (r.need_smooth) {
+    status = smooth.build(initial_mesh);
+    if (!status.ok()) return Status::Failure("composed target: " + status.message());
+  }
+
   std::vector<double> out;
   out.reserve(points.size() * d * d);
   double N[kMaxCellNodes], A[9], w[9];
@@ -333,6 +347,13 @@ Status build_composed_targets(const Mesh& mesh, const SampleSet& points, const T
         case FactorSource::kInitial:
           copy_part(kind, initial, &f);
           break;
+        case FactorSource::kSmooth: {
+          double v[3] = {1, 1, 1};
+          smooth.aspect(initial_mesh, c, xi, v);
+          if (!apply_values(kind, d, v, frame, &f))
+            return failure(kind, "smoothed aspect " + list(v, d) + " is invalid" + in_cell());
+          break;
+        }
         case FactorSource::kConstant:
           copy_part(kind, r.constants, &f);
           break;

@@ -14,6 +14,8 @@
 //   field      a point_data array interpolated to the sample point with the cell's shape
 //              functions (components = the value count below)
 //   function   `function(x, values)` at the sample point's physical position x
+//   smooth     aspect only: the initial mesh's stretch averaged over neighbouring cells
+//              (smoothed_aspect.h): graded meshes keep their edge ratios, noise is removed
 //
 // Values, per factor, for d-dimensional elements (the same for constants, field components and
 // function outputs):
@@ -55,6 +57,7 @@ enum class FactorSource {
   kConstant,  // a list of numbers
   kField,     // "field:NAME"
   kFunction,  // C++ only
+  kSmooth,    // "smooth": the aspect only, the initial mesh's smoothed stretch (smoothed_aspect.h)
 };
 
 enum class FactorKind { kSize, kOrientation, kSkew, kAspect };
