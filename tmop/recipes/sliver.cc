@@ -5,6 +5,8 @@
 
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/cell_quality.h"
+#include "tmop/recipes/boundary_layer.h"
+#include "tmop/recipes/guard.h"
 
 namespace tmop {
 
@@ -50,20 +52,15 @@ Status remove_slivers(Mesh* mesh, const SliverOptions& options, RecipeResult* re
   // cells the formula keeps, not a layer: holding their vertices would freeze the bad cells
   // around them (the part mesh: 25 such cells in groups of at most 4; holding them lowered the
   // worst mean ratio 0.42 -> 0.36). So groups connected through shared facets count only from
-  // layer_min_cells cells.
-  if (options.layer_edge_ratio > 0) {
-    std::vector<int> root(num_cells);
-    for (int c = 0; c < num_cells; ++c) root[c] = c;
-    auto find = [&root](int c) {
-      while (root[c] != c) c = root[c] = root[root[c]];
-      return c;
-    };
-    for (const InteriorFacet& f : interior_facets(*mesh))
-      if (layer[f.cell[0]] && layer[f.cell[1]]) root[find(f.cell[0])] = find(f.cell[1]);
-    std::vector<int> size(num_cells, 0);
-    for (int c = 0; c < num_cells; ++c) size[find(c)] += layer[c];
-    for (int c = 0; c < num_cells; ++c)
-      layer[c] = layer[c] && size[find(c)] >= options.layer_min_cells;
+  // layer_min_cells cells (boundary_layer.h; here a group need not touch the boundary).
+  {
+    BoundaryLayerOptions lo;
+    lo.edge_ratio = options.layer_edge_ratio;
+    lo.max_angle_deg = 180;  // the candidates are the cells the formula keeps (c < 1/2)
+    lo.min_cells = options.layer_min_cells;
+    lo.require_boundary = false;
+    lo.simplices_only = false;
+    layer = find_boundary_layer(*mesh, lo, &layer);
   }
 
   // The layer's outer surface is held: vertices of layer cells that also belong to another
@@ -128,10 +125,24 @@ Status remove_slivers(Mesh* mesh, const SliverOptions& options, RecipeResult* re
   keep.target.type = TargetType::kReference;  // the mesh itself, as it is now
   keep.weights = c_keep;
   stage.terms = {shape, keep};
-  StageResult sr;
-  Status s = optimize_stage(mesh, stage, &sr);
+  GuardOptions guard;
+  guard.enabled = options.guard_worst;
+  guard.guarantees.means = false;
+  guard.rounds = options.guard_rounds;
+  guard.threads = options.solver.threads;
+  GuaranteeBaseline baseline;
+  if (guard.enabled) baseline = guarantee_baseline(*mesh, guard.threads);
+  auto solve = [&](const std::vector<char>& held, const std::vector<double>&, int round) {
+    StageSpec st = stage;
+    st.fixed = held;
+    if (round > 0) st.name += " (guard round " + std::to_string(round) + ")";
+    StageResult sr;
+    Status s = optimize_stage(mesh, st, &sr);
+    if (s.ok()) result->stages.push_back(sr);
+    return s;
+  };
+  Status s = guarded_solve(mesh, baseline, guard, fixed, solve, result);
   if (!s.ok()) return s;
-  result->stages.push_back(sr);
   result->after = measure_mesh(*mesh, options.rule);
   result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();

@@ -56,6 +56,10 @@ struct SliverOptions {
   std::vector<char> fixed;
   SampleRule rule = SampleRule::kDefault;
   SolverOptions solver;
+  // The worst-element guarantees (recipes/guard.h; type means are not guarded: the recipe keeps
+  // good cells, it does not improve the average). false: one solve, unchecked.
+  bool guard_worst = true;
+  int guard_rounds = 4;
 };
 
 // Fails, leaving the mesh unchanged, on a mesh without tets, an inverted input, or a bad
