@@ -28,6 +28,7 @@
 #include "tmop/mesh/orientation.h"
 #include "tmop/mesh/validate.h"
 #include "tmop/metric/metric.h"
+#include "tmop/quality/guarantees.h"
 #include "tmop/quality/quality_fields.h"
 #include "tmop/quality/quality_json.h"
 #include "tmop/quality/quality_report.h"
@@ -86,7 +87,8 @@ DEFINE_string(target_skew, "",
               "PHI12,PHI13,PHI23).");
 DEFINE_string(target_aspect, "",
               "--target=composed: relative edge lengths (default: --target_shape): ideal, "
-              "initial, field:NAME, or lengths (2D: L1,L2; 3D: L1,L2,L3).");
+              "initial, smooth (the initial mesh's, averaged over neighbours), field:NAME, or "
+              "lengths (2D: L1,L2; 3D: L1,L2,L3).");
 DEFINE_string(size_field, "", "Point-data array of target edge lengths (--target=size_field).");
 DEFINE_string(sample_points, "default", "Sample rule: default, corners, nodes, centroid, gauss.");
 DEFINE_double(power, 0,
@@ -128,6 +130,15 @@ DEFINE_double(layer_edge_ratio, 3,
               "the layer shares with other cells are held. 0: nothing held.");
 DEFINE_int32(max_sweeps, 100, "Recipe laplace: maximum Gauss-Seidel sweeps.");
 DEFINE_bool(verbose, false, "Print a progress line per solver iteration.");
+DEFINE_string(guarantee, "all",
+              "What the result must keep against the input (docs/quality.md, Guarantees): all = "
+              "no cell type's or region's worst element worse (each type by its own measures), "
+              "no type's mean lower, no new slivers or inverted cells; worst = the same without "
+              "the means (a trade of the average for other goals); off = nothing checked. A "
+              "result that breaks one is not written (exit 1; --write_on_failure writes it). "
+              "Recipes auto, shape, high_order, surface and untangle keep all; sliver and "
+              "equal_edge the worst; size_adapt, preserve and laplace trade shape and are not "
+              "checked.");
 
 namespace {
 
@@ -256,6 +267,8 @@ int main(int argc, char** argv) {
   if (!(FLAGS_power >= 1 || FLAGS_power == 0)) return fail(2, "--power must be >= 1 (or 0)");
   if (!(FLAGS_feature_angle > 0 && FLAGS_feature_angle < 180))
     return fail(2, "--feature_angle must be in (0, 180) degrees");
+  if (FLAGS_guarantee != "all" && FLAGS_guarantee != "worst" && FLAGS_guarantee != "off")
+    return fail(2, "--guarantee must be all, worst or off, not '" + FLAGS_guarantee + "'");
   if (FLAGS_boundary != "fixed" && FLAGS_boundary != "slide")
     return fail(2, "--boundary must be fixed or slide, not '" + FLAGS_boundary + "'");
   // Recipes surface and sliver slide by default (their definitions); the others keep the
@@ -329,6 +342,14 @@ int main(int argc, char** argv) {
   opt.slide = slide;
   opt.boundary.geometry = FLAGS_geometry;
   opt.boundary.feature_angle_deg = FLAGS_feature_angle;
+  // The guarantees each recipe keeps (its guard) and the tool checks on its result.
+  const bool trades_shape =
+      FLAGS_recipe == "size_adapt" || FLAGS_recipe == "preserve" || FLAGS_recipe == "laplace";
+  const bool keeps_means = FLAGS_guarantee == "all" && FLAGS_recipe != "sliver" &&
+                           FLAGS_recipe != "equal_edge" && !trades_shape;
+  const bool check_guarantee = FLAGS_guarantee != "off" && !trades_shape;
+  opt.guard_worst = FLAGS_guarantee != "off";
+  opt.guard_means = keeps_means;
 
   Mesh mesh;
   Status s = read_mesh(FLAGS_input, &mesh);
@@ -390,6 +411,8 @@ int main(int argc, char** argv) {
 
   RecipeResult result;
   const IterationRecord before = measure_mesh(mesh, opt.rule);
+  GuaranteeBaseline baseline;
+  if (check_guarantee) baseline = guarantee_baseline(mesh, FLAGS_threads);
   // --write_on_failure writes the better of the input and the recipe's result (fewer inverted
   // cells; the input on a tie).
   Mesh input_copy;
@@ -410,6 +433,7 @@ int main(int argc, char** argv) {
     e.shape_guard_weight = FLAGS_shape_guard_weight;
     if (FLAGS_sample_points != "default") e.rule = opt.rule;
     e.solver = opt.solver;
+    e.guard_worst = opt.guard_worst;
     e.slide = slide;
     e.boundary = opt.boundary;
     s = equal_edge(&mesh, e, &result);
@@ -436,6 +460,7 @@ int main(int argc, char** argv) {
     sl.boundary = opt.boundary;
     sl.rule = opt.rule;
     sl.solver = opt.solver;
+    sl.guard_worst = opt.guard_worst;
     sl.layer_edge_ratio = FLAGS_layer_edge_ratio;
     s = remove_slivers(&mesh, sl, &result);
   } else if (FLAGS_recipe == "laplace") {
@@ -478,9 +503,26 @@ int main(int argc, char** argv) {
                 st.name.c_str(), st.initial_objective, st.final_objective, power, st.iterations,
                 st.solves, st.seconds, st.termination.c_str());
   }
+  // The guarantees, checked on the result independently of the recipe's own guard.
+  bool guarantee_broken = false;
+  if (s.ok() && check_guarantee) {
+    GuaranteeOptions g;
+    g.means = keeps_means;
+    const std::vector<GuaranteeViolation> broken =
+        check_guarantees(baseline, guarantee_values(mesh, FLAGS_threads), g);
+    if (!broken.empty()) {
+      guarantee_broken = true;
+      s = Status::Failure(
+          "the result breaks a guarantee: " + broken[0].message() +
+          (broken.size() > 1 ? " (and " + std::to_string(broken.size() - 1) + " more)" : "") +
+          "; --guarantee=worst or off accepts such a trade");
+    }
+  }
   const Status recipe_status = s;
   std::string written_note;
-  if (!recipe_status.ok()) {
+  if (guarantee_broken) {
+    written_note = FLAGS_write_on_failure ? "result written" : "nothing written";
+  } else if (!recipe_status.ok()) {
     // Inverted counts as the quality report counts them (quadratic cells by their certificate).
     const std::int64_t now = compute_quality(mesh).inverted_cells;
     const std::int64_t was = quality_before.inverted_cells;
@@ -505,7 +547,9 @@ int main(int argc, char** argv) {
   QualityReport quality_after = print_quality("after:", mesh, !mesh.cell_data.empty());
   quality_after.opposite_convention = flipped;  // written back in the input's convention
   if (result.layer_cells >= 0)
-    std::printf("boundary layer: %d cells, %d vertices held on its outer surface\n",
+    std::printf(result.recipe == "sliver"
+                    ? "boundary layer: %d cells, %d vertices held on its outer surface\n"
+                    : "boundary layer: %d cells kept, %d vertices held\n",
                 result.layer_cells, result.held_vertices);
   if (result.certified >= 0)
     std::printf("certified valid everywhere (Bernstein bound): %d of %d quadratic cells\n",

@@ -202,6 +202,7 @@ TEST(RecipeJson, HoldsEveryDocumentedKey) {
                           "uncertified",
                           "layer_cells",
                           "held_vertices",
+                          "guard_held_cells",
                           "stages",
                           "name",
                           "linear_solver",

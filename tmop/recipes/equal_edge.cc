@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "tmop/mesh/topology.h"
+#include "tmop/recipes/guard.h"
 #include "tmop/recipes/improve_shape.h"
 
 namespace tmop {
@@ -66,10 +68,34 @@ Status equal_edge(Mesh* mesh, const EqualEdgeOptions& options, RecipeResult* res
     guard.weights.assign(count_sample_points(*mesh, options.rule), options.shape_guard_weight);
     stage.terms.push_back(guard);
   }
-  StageResult sr;
-  Status s = optimize_stage(mesh, stage, &sr);
+  GuardOptions guard;
+  guard.enabled = options.guard_worst;
+  guard.guarantees.means = false;
+  guard.warm_start = false;
+  guard.soft_rounds = options.shape_guard_weight > 0 ? 3 : 0;
+  guard.rounds = options.guard_rounds + guard.soft_rounds;
+  guard.threads = options.solver.threads;
+  GuaranteeBaseline baseline;
+  if (guard.enabled) baseline = guarantee_baseline(*mesh, guard.threads);
+  std::vector<char> fixed = options.fixed;
+  if (fixed.empty())
+    fixed =
+        options.slide ? std::vector<char>(mesh->num_vertices(), 0) : boundary_vertex_mask(*mesh);
+  const SampleSet points = canonical_sample_set(*mesh, options.rule);
+  auto solve = [&](const std::vector<char>& held, const std::vector<double>& weight, int round) {
+    StageSpec st = stage;
+    st.fixed = held;
+    if (st.terms.size() > 1)  // the shape guard term, weighted up where the guard asks
+      for (std::size_t p = 0; p < points.size(); ++p)
+        st.terms[1].weights[p] = options.shape_guard_weight * weight[points.cell[p]];
+    if (round > 0) st.name += " (guard round " + std::to_string(round) + ")";
+    StageResult sr;
+    Status s = optimize_stage(mesh, st, &sr);
+    if (s.ok()) result->stages.push_back(sr);
+    return s;
+  };
+  Status s = guarded_solve(mesh, baseline, guard, fixed, solve, result);
   if (!s.ok()) return s;
-  result->stages.push_back(sr);
   result->after = measure_mesh(*mesh, options.rule);
   result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();

@@ -58,6 +58,11 @@ struct EqualEdgeOptions {
   // Solver settings of the stage (optimize/solver_options.h); defaults suit meshes up to ~1M
   // elements.
   SolverOptions solver;
+  // The worst-element guarantees (recipes/guard.h): no cell type's or region's worst element,
+  // by its own measures, ends worse than in the input, no new slivers or inverted cells (equal
+  // edges trade the average shape, so type means are not guarded). false: one solve, unchecked.
+  bool guard_worst = true;
+  int guard_rounds = 4;
 };
 
 Status equal_edge(Mesh* mesh, const EqualEdgeOptions& options, RecipeResult* result);

@@ -9,9 +9,9 @@
 // worst element get worse while the average improves, so the recipe checks every cell afterwards
 // against the input's worst quality (the minimum tmop_quality prints: mean ratio for simplices,
 // scaled Jacobian otherwise): cells that fell below it are held at their input shape (their
-// vertices fixed) and the stage solves again from the input, until no cell is below (guard_rounds
-// at most; then the input is kept). So the worst element never gets worse, and the rest of the mesh
-// keeps its improvement.
+// vertices fixed) and the stage solves again from the input (recipes/guard.h), per cell type and
+// region and for every measure of quality/guarantees.h. So no type's worst element gets worse,
+// and the rest of the mesh keeps its improvement.
 #ifndef TMOP_RECIPES_IMPROVE_SHAPE_H_
 #define TMOP_RECIPES_IMPROVE_SHAPE_H_
 
@@ -21,6 +21,7 @@
 #include "tmop/core/status.h"
 #include "tmop/mesh/mesh.h"
 #include "tmop/optimize/stage.h"
+#include "tmop/recipes/boundary_layer.h"
 #include "tmop/recipes/recipe_geometry.h"
 #include "tmop/recipes/recipe_result.h"
 
@@ -39,13 +40,25 @@ struct ShapeOptions {
   // mean ratio min 0.36 vs 0.44, docs/benchmarks.md), and with a sliding boundary it can leave
   // the worst dihedral worse than a fixed boundary does.
   double power = 0;
-  // Never return a mesh whose worst element is worse than the input's: no cell's headline
-  // quality (mean ratio for simplices, scaled Jacobian for the other types) may end below the
-  // input's minimum by more than guard_tolerance (absolute; qualities are in (0, 1]). Cells that
-  // would are held at their input shape, at most guard_rounds re-solves (see above).
+  // The guarantees (quality/guarantees.h, recipes/guard.h): no cell type's or region's worst
+  // element ends worse than in the input (each type by its own measures: mean ratio for
+  // simplices, scaled Jacobian for the others, the corner cell and det J ratio for quadratic
+  // cells, dihedral angles of tets), no new slivers or inverted cells, and (guard_means) no type's
+  // mean falls, each within guard_tolerance (absolute). Cells that would break one are held at
+  // their input shape and the stage solves again from the input, at most guard_rounds times;
+  // then the largest step back towards the input that keeps them is taken.
   bool guard_worst = true;
+  bool guard_means = true;
   double guard_tolerance = 1e-6;
   int guard_rounds = 4;
+  // Non-simplex cells (quad, hex, wedge, pyramid; judged by the scaled Jacobian, which sees only
+  // angles) are driven to the ideal angles with the input's smoothed aspect (composed aspect
+  // "smooth", smoothed_aspect.h) instead of the unit-aspect ideal, when the target is the
+  // default (equal_size).
+  bool target_aspect_of_input = true;
+  // Boundary layers (boundary_layer.h) are kept: their cells' vertices are held.
+  bool keep_boundary_layers = true;
+  BoundaryLayerOptions boundary_layer;
   std::vector<char> fixed;  // per-vertex flags; empty = boundary fixed (or sliding, below)
   // Boundary vertices slide on their curves and surfaces (corners stay fixed): the input's own
   // boundary, or boundary.geometry. Surface meshes always slide on their surface.

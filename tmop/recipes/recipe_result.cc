@@ -66,7 +66,8 @@ std::string recipe_json(const RecipeResult& r) {
       ", \"uncertified\": " + (r.uncertified < 0 ? "null" : std::to_string(r.uncertified)) +
       ", \"layer_cells\": " + (r.layer_cells < 0 ? "null" : std::to_string(r.layer_cells)) +
       ", \"held_vertices\": " + (r.held_vertices < 0 ? "null" : std::to_string(r.held_vertices)) +
-      ", \"stages\": [";
+      ", \"guard_held_cells\": " +
+      (r.guard_held_cells < 0 ? "null" : std::to_string(r.guard_held_cells)) + ", \"stages\": [";
   for (std::size_t i = 0; i < r.stages.size(); ++i) {
     const StageResult& st = r.stages[i];
     s += i ? ", {" : "{";

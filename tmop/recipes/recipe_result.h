@@ -23,12 +23,16 @@ struct RecipeResult {
   // Recipe sliver: boundary-layer cells found and the vertices held on the layer's outer
   // surface (-1 for other recipes).
   int layer_cells = -1, held_vertices = -1;
+  // The guarantee guard (guard.h): cells held at their input shape in the last guard round
+  // (0 when nothing had to be held; -1 when no guard ran).
+  int guard_held_cells = -1;
 };
 
 // JSON object (no trailing newline) with stable keys, numbers printed with %.17g:
 // {"recipe", "seconds", "before": {"min_quality", "inverted"}, "after": {...},
 //  "certified", "uncertified" (null when not attempted),
-//  "layer_cells", "held_vertices" (recipe sliver; null otherwise),
+//  "layer_cells", "held_vertices" (recipes sliver, shape: boundary layer; null otherwise),
+//  "guard_held_cells" (the guarantee guard: cells held in its last round; null without guard),
 //  "stages": [{"name", "linear_solver", "elements", "sample_points", "free_vertices",
 //   "initial_objective", "final_objective", "iterations", "termination", "seconds",
 //   "inverted_before", "inverted_after", "min_quality_before", "min_quality_after",

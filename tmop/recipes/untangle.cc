@@ -134,6 +134,9 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
       s = improve_shape(mesh, shape, &shape_result);
       if (!s.ok()) return s;
       for (StageResult& st : shape_result.stages) result->stages.push_back(std::move(st));
+      result->layer_cells = shape_result.layer_cells;
+      result->held_vertices = shape_result.held_vertices;
+      result->guard_held_cells = shape_result.guard_held_cells;
     }
     if (!options.certify || with_certificate == 0) break;
     const std::size_t points_before = extra.size();

