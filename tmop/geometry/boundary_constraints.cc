@@ -30,7 +30,8 @@ std::unique_ptr<GeometryManifold> patch_manifold(const Mesh& mesh, const Boundar
     }
   }
   for (std::int32_t v : touched) (*local)[v] = -1;
-  return std::make_unique<TriangleSurfaceManifold>(std::move(vertices), triangles);
+  return std::make_unique<TriangleSurfaceManifold>(std::move(vertices), triangles,
+                                                   TriangleSurfaceManifold::Shape::kSmooth);
 }
 
 }  // namespace
