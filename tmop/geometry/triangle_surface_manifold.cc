@@ -160,6 +160,16 @@ TriangleSurfaceManifold::TriangleSurfaceManifold(std::vector<double> vertices,
     }
   }
   CHECK_GT(triangles_.size(), 0u) << "TriangleSurfaceManifold: no triangle with positive area";
+  {
+    double blo[3] = {kInf, kInf, kInf}, bhi[3] = {-kInf, -kInf, -kInf};
+    for (std::size_t i = 0; i < lo.size(); ++i) {
+      blo[i % 3] = std::min(blo[i % 3], lo[i]);
+      bhi[i % 3] = std::max(bhi[i % 3], hi[i]);
+    }
+    double e[3];
+    vec3::sub(bhi, blo, e);
+    scale_ = vec3::norm(e);
+  }
   if (shape == Shape::kSmooth) {
     // Vertex normals: facet normals weighted by the corner angle, each turned to agree with the
     // sum so far (a patch of inconsistently oriented cells still gets a normal line).
@@ -210,6 +220,7 @@ TriangleSurfaceManifold::TriangleSurfaceManifold(std::vector<double> vertices,
       fit_normal(vertices_.data() + 3 * v, q, &vn[3 * v]);
     }
     patches_.resize(30 * static_cast<std::size_t>(num_triangles()));
+    flat_tree_.Build(3, lo, hi);
     lo.assign(3 * num_triangles(), kInf);
     hi.assign(3 * num_triangles(), -kInf);
     for (int t = 0; t < num_triangles(); ++t) {
@@ -299,7 +310,7 @@ void TriangleSurfaceManifold::eval_patch(int tri, const double* lam, double* out
   }
 }
 
-void TriangleSurfaceManifold::solve_patch(int tri, const double* x, double* lam, double* on) const {
+bool TriangleSurfaceManifold::solve_patch(int tri, const double* x, double* lam, double* on) const {
   const double* c[3] = {corner(tri, 0), corner(tri, 1), corner(tri, 2)};
   const double* n = frame(tri);
   double dlam[3];
@@ -335,16 +346,30 @@ void TriangleSurfaceManifold::solve_patch(int tri, const double* x, double* lam,
       break;
     }
   }
-  if (lam[0] < 0 || lam[1] < 0 || lam[2] < 0) {
-    clamp_barycentric(lam);
-    eval_patch(tri, lam, on, nullptr);
-  } else {
-    eval_patch(tri, lam, on, nullptr);
-  }
+  const bool inside = lam[0] >= 0 && lam[1] >= 0 && lam[2] >= 0;
+  if (!inside) clamp_barycentric(lam);
+  eval_patch(tri, lam, on, nullptr);
+  return inside;
 }
 
 int TriangleSurfaceManifold::locate_smooth(const double* x, double* lam, double* on) const {
-  double d2;
+  // Fast path for points on the surface (every Plus, Minus and Jacobian query but the first
+  // projection of a point): the facet nearest to x, or one of its neighbours, holds x in its
+  // patch. Accepted only when the patch reproduces x to round-off; else the full search.
+  double d2, p[3];
+  const int t0 = flat_tree_.Nearest(
+      x, kInf,
+      [&](int t) { return closest_point_triangle(x, corner(t, 0), corner(t, 1), corner(t, 2), p); },
+      &d2);
+  const double tol2 = 1e-24 * scale_ * scale_;
+  for (int k = -1; k < 3 && t0 >= 0; ++k) {
+    const int t = k < 0 ? t0 : neighbours_[3 * t0 + k];
+    if (t < 0) continue;
+    double r[3];
+    const bool inside = solve_patch(t, x, lam, on);
+    vec3::sub(x, on, r);
+    if (inside && vec3::dot(r, r) <= tol2) return t;
+  }
   const int tri = tree_.Nearest(
       x, kInf,
       [&](int t) {

@@ -85,8 +85,9 @@ class TriangleSurfaceManifold : public GeometryManifold {
 
   // Smooth shape: x's triangle, barycentric coordinates lam[3] and point of the patch.
   int locate_smooth(const double* x, double* lam, double* on) const;
-  // Solves b_tri(lam) + s n_tri = x from the flat projection; lam clamped to the triangle.
-  void solve_patch(int tri, const double* x, double* lam, double* on) const;
+  // Solves b_tri(lam) + s n_tri = x from the flat projection; lam clamped to the triangle
+  // (returns false when it had to be).
+  bool solve_patch(int tri, const double* x, double* lam, double* on) const;
   // The patch point at lam and its partial derivatives d/dlam_a (homogeneous, dl[3 * a + i]).
   void eval_patch(int tri, const double* lam, double* out, double* dl) const;
   // The patch's tangents along the flat frame's u and v at lam: columns ju, jv.
@@ -100,7 +101,9 @@ class TriangleSurfaceManifold : public GeometryManifold {
   std::vector<double> frames_;            // per triangle: unit normal, u, v
   std::vector<std::int32_t> neighbours_;  // per triangle: across the edge opposite corner k
   std::vector<double> patches_;           // smooth shape: per triangle 10 Bezier control points
-  AabbTree tree_;
+  AabbTree tree_;       // boxes of the triangles (smooth: of their control points)
+  AabbTree flat_tree_;  // smooth shape: boxes of the flat triangles
+  double scale_ = 1;    // bounding-box diagonal of the vertices
 };
 
 }  // namespace tmop
