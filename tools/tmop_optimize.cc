@@ -362,6 +362,22 @@ int main(int argc, char** argv) {
   wopt.binary = FLAGS_binary;
   s = check_writable(FLAGS_output, mesh, wopt);
   if (!s.ok()) return fail(2, s.message());
+  // The recipe must fit the mesh and a --geometry must be well formed, near the mesh and used:
+  // usage errors, said before any work (recipe_geometry.h: check_geometry_spec).
+  if (FLAGS_recipe == "sliver" && !(mesh.dim() == 3 && mesh.space_dim == 3))
+    return fail(2, FLAGS_input + ": recipe sliver needs a volume mesh (tets), not a " +
+                       std::to_string(mesh.dim()) + "D mesh");
+  if (FLAGS_recipe == "surface" && !is_surface_mesh(mesh))
+    return fail(2, FLAGS_input + ": recipe surface needs a surface mesh (2D cells in 3D)");
+  if (!FLAGS_geometry.empty()) {
+    if (FLAGS_recipe == "preserve") return fail(2, "--geometry is not used by recipe preserve");
+    BoundaryOptions b = opt.boundary;
+    b.slide = slide;
+    s = check_geometry_spec(mesh, b);
+    if (!s.ok())
+      return fail(
+          2, s.message() + (!slide && !is_surface_mesh(mesh) ? " (add --boundary=slide)" : ""));
+  }
   if (!FLAGS_metric.empty() && !make_metric(FLAGS_metric, mesh.dim())) {
     std::string known;
     for (const std::string& n : metric_names(mesh.dim())) known += (known.empty() ? "" : ", ") + n;
@@ -470,8 +486,6 @@ int main(int argc, char** argv) {
     l.boundary = opt.boundary;
     s = laplace(&mesh, l, &result);
   } else if (FLAGS_recipe == "surface") {
-    if (!is_surface_mesh(mesh))
-      return fail(2, FLAGS_input + ": recipe surface needs a surface mesh (2D cells in 3D)");
     UntangleOptions u;
     u.rule = opt.rule;
     u.solver = opt.solver;

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "tests/geometry/curved_test_meshes.h"
 #include "tests/optimize/grid_meshes.h"
 #include "tmop/io/mesh_io.h"
 
@@ -223,6 +224,58 @@ TEST_F(TmopOptimizeTool, FailedRunWritesItsReport) {
   tt << g.rdbuf();
   EXPECT_NE(tt.str().find("\"output\": \"" + dir_ + "/o.msh\""), std::string::npos) << tt.str();
   EXPECT_NE(tt.str().find("\"inverted\": 1"), std::string::npos) << tt.str();
+}
+
+// A --geometry is checked against the mesh before any work (no "before:" line): malformed under
+// every recipe, far from the mesh (with the distance), unused by a fixed volume boundary; and a
+// recipe for another kind of mesh (sliver on 2D) is refused there too. All exit 2, one line.
+TEST_F(TmopOptimizeTool, GeometryAndRecipeAreCheckedBeforeAnyWork) {
+  const double c[3] = {2, 2, 0};
+  const std::string sphere = dir_ + "/sphere.msh", box = dir_ + "/box.msh";
+  ASSERT_TRUE(write_mesh(sphere, curved_meshes::cube_sphere(4, 3.0, c, true)).ok());
+  ASSERT_TRUE(write_mesh(box, testing_grid::grid(CellType::kTet4, 2)).ok());
+  auto stdout_text = [&]() {
+    std::ifstream f(dir_ + "/out.txt");
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+  };
+  const struct {
+    std::string input, args, expect;
+  } cases[] = {
+      {sphere, "--geometry=sphere:1,2", "expected 4 comma-separated numbers"},
+      {sphere, "--geometry=sphere:1,2 --recipe=surface", "expected 4 comma-separated numbers"},
+      {sphere, "--geometry=sphere:1,2 --recipe=laplace", "expected 4 comma-separated numbers"},
+      {sphere, "--geometry=sphere:1,2 --recipe=shape", "expected 4 comma-separated numbers"},
+      {sphere, "--geometry=sphere:0,0,0,1", "is 0.5176 from the mesh"},
+      {sphere, "--geometry=sphere:0,0,0,1 --recipe=surface", "is 0.5176 from the mesh"},
+      {box, "--geometry=plane:0,0,0,0,0,1", "would be unused"},
+      {box, "--geometry=plane:0,0,-1,0,0,1 --boundary=slide", "from the mesh"},
+      {dir_ + "/grid.msh", "--recipe=sliver", "recipe sliver needs a volume mesh"},
+      {dir_ + "/grid.msh", "--geometry=plane:0,0,0,0,0,1 --boundary=slide", "no surfaces"},
+  };
+  for (const auto& k : cases) {
+    std::string err;
+    const std::string args = "--input=" + k.input + " --output=" + dir_ + "/o.msh " + k.args;
+    EXPECT_EQ(run(args, &err), 2) << args << ": " << err;
+    EXPECT_EQ(lines(err), 1) << args << ": " << err;
+    EXPECT_NE(err.find(k.expect), std::string::npos) << args << ": " << err;
+    EXPECT_EQ(stdout_text().find("before:"), std::string::npos) << args;
+    EXPECT_NE(std::system(("test -e " + dir_ + "/o.msh").c_str()), 0) << args;
+  }
+  // The right geometry is used: every vertex stays on it.
+  std::string err;
+  EXPECT_EQ(
+      run("--input=" + sphere + " --output=" + dir_ + "/o.msh --geometry=sphere:2,2,0,3", &err), 0)
+      << err;
+  Mesh out;
+  ASSERT_TRUE(read_mesh(dir_ + "/o.msh", &out).ok());
+  EXPECT_LT(curved_meshes::sphere_drift(out, c, 3.0), 1e-9);
+  EXPECT_EQ(run("--input=" + box + " --output=" + dir_ +
+                    "/o.msh --geometry=plane:0,0,0,0,0,1 --boundary=slide",
+                &err),
+            0)
+      << err;
 }
 
 }  // namespace

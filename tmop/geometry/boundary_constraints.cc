@@ -6,6 +6,7 @@
 #include "tmop/geometry/geometry_source.h"
 #include "tmop/geometry/plane_manifold.h"
 #include "tmop/geometry/polyline_manifold.h"
+#include "tmop/geometry/projected_curve_manifold.h"
 #include "tmop/geometry/triangle_surface_manifold.h"
 #include "tmop/geometry/vec3.h"
 
@@ -30,7 +31,8 @@ std::unique_ptr<GeometryManifold> patch_manifold(const Mesh& mesh, const Boundar
     }
   }
   for (std::int32_t v : touched) (*local)[v] = -1;
-  return std::make_unique<TriangleSurfaceManifold>(std::move(vertices), triangles);
+  return std::make_unique<TriangleSurfaceManifold>(std::move(vertices), triangles,
+                                                   TriangleSurfaceManifold::Shape::kSmooth);
 }
 
 }  // namespace
@@ -138,6 +140,41 @@ Status BoundaryConstraints::Build(const Mesh& mesh, const BoundaryOptions& optio
         bc->slot_[v] = user;
         bc->normal_slot_[v] = user;
         ++bc->num_on_user_geometry_;
+      }
+    }
+    // Curves on an analytic geometry (an open cap's rim) that border only curved patches: their
+    // polylines projected onto it, so their vertices stay on it instead of on the chords. A
+    // curve shared with a planar patch keeps its polyline (the projection could leave the
+    // plane).
+    if (source.kind == GeometrySourceKind::kAnalytic && space == 3) {
+      const int nc = static_cast<int>(c.curves.size());
+      std::vector<char> eligible(nc, 1);
+      for (const BoundaryPatch& patch : c.patches) {
+        for (const auto& t : patch.triangles) {
+          for (int k = 0; k < 3; ++k) {
+            const std::int32_t a = t[k], b = t[(k + 1) % 3];
+            const bool ca = c.kind[a] == VertexKind::kCurve, cb = c.kind[b] == VertexKind::kCurve;
+            if (!ca && !cb) continue;
+            const int curve = ca ? c.id[a] : c.id[b];
+            const bool other = ca ? (cb ? c.id[b] == curve : c.kind[b] == VertexKind::kFixed)
+                                  : c.kind[a] == VertexKind::kFixed;
+            if (other && patch.planar) eligible[curve] = 0;
+          }
+        }
+      }
+      for (int k = 0; k < nc; ++k) {
+        const BoundaryCurve& curve = c.curves[k];
+        if (!eligible[k] || curve.vertices.size() < (curve.closed ? 3u : 2u)) continue;
+        bool all_on = true;
+        std::vector<double> points;
+        for (std::int32_t v : curve.vertices) {
+          all_on = all_on && g.Distance(mesh.vertex(v)) <= tol;
+          points.insert(points.end(), mesh.vertex(v), mesh.vertex(v) + 3);
+        }
+        if (!all_on) continue;
+        bc->manifolds_[k] = std::make_unique<ProjectedCurveManifold>(points, curve.closed, &g);
+        for (std::int32_t v : curve.vertices)
+          bc->num_on_user_geometry_ += c.kind[v] == VertexKind::kCurve;
       }
     }
   }

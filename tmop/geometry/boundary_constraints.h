@@ -6,11 +6,14 @@
 //
 // Vertex kinds: interior -> free, no manifold. Corners -> fixed. Curve vertices -> the curve's
 // PolylineManifold (straight curves: a two-point polyline, exact and clamped at the corners).
-// Surface vertices -> the patch's PlaneManifold (planar patches) or TriangleSurfaceManifold
-// (curved patches, built from the ORIGINAL facets so repeated steps do not drift). With a user
-// geometry, surface vertices of curved patches that lie on it (the vertex and its patch
-// neighbours within on_geometry_tolerance) use it instead; planar patches keep their exact
-// plane, curves keep their polylines.
+// Surface vertices -> the patch's PlaneManifold (planar patches) or TriangleSurfaceManifold in
+// its smooth shape (curved patches: a smooth surface through the ORIGINAL vertices, walked on
+// the original facets, so repeated steps do not drift and vertices do not sink onto the facets).
+// With a user geometry, surface vertices of curved patches that lie on it (the vertex and its
+// patch neighbours within on_geometry_tolerance) use it instead; planar patches keep their exact
+// plane. Curves keep their polylines, except those whose vertices all lie on an analytic user
+// geometry and that border only curved patches (an open cap's rim): ProjectedCurveManifold, the
+// polyline projected onto the geometry.
 // slide = false: every boundary vertex is fixed; surface meshes (2D cells in 3D) keep their
 // surface vertices sliding (they must stay on the surface) and fix their rim curves.
 //

@@ -10,6 +10,7 @@
 #define TMOP_RECIPES_RECIPE_GEOMETRY_H_
 
 #include <memory>
+#include <string>
 
 #include "tmop/core/status.h"
 #include "tmop/geometry/boundary_constraints.h"
@@ -38,6 +39,20 @@ Status build_recipe_geometry(const Mesh& mesh, const BoundaryOptions& options, R
 Status resolve_recipe_geometry(const Mesh& mesh, bool slide, const BoundaryOptions& options,
                                const RecipeGeometry* given, RecipeGeometry* own,
                                const RecipeGeometry** out);
+
+// Checks a user geometry (options.geometry; "" is always fine) against the mesh before any work,
+// in the mesh's own units. Failure, one line: a malformed spec or unreadable / unusable surface
+// file (load_geometry_source's message); a geometry on a 2D mesh (no surfaces to slide on); a
+// geometry far from the mesh, with the distance in the message: no boundary facet (a surface
+// mesh's cell, a volume mesh's boundary face; split into triangles) has all its vertices within
+// the tolerance, the smaller of kGeometryTolerance x the boundary's bounding-box diagonal and
+// options.on_geometry_tolerance x the mean boundary edge (the tolerance by which
+// BoundaryConstraints lets vertices take the geometry), and the distance is the largest vertex
+// distance of the facet nearest to lying on it; a geometry that would be unused because
+// options.slide is false on a volume mesh (a fixed boundary; surface meshes always slide on
+// their surface).
+Status check_geometry_spec(const Mesh& mesh, const BoundaryOptions& options);
+constexpr double kGeometryTolerance = 1e-3;
 
 // True for a surface mesh (2D elements in 3D space): such meshes always need a geometry.
 bool is_surface_mesh(const Mesh& mesh);
