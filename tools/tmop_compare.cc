@@ -99,30 +99,32 @@ struct Displacement {
   double max = 0, mean = 0, rms = 0, max_rel = 0, mean_rel = 0, rms_rel = 0;
 };
 
+// |t|, also for meshes at 1e-310 or 1e300 (std::hypot scales, where squares would under- or
+// overflow).
+double norm3(const double* t) { return std::hypot(t[0], t[1], t[2]); }
+
 // |to - from| per vertex; relative to the mean length of the vertex's edges in `from`.
 Displacement displacement(const tmop::Mesh& from, const tmop::Mesh& to) {
   const int nv = from.num_vertices();
   std::vector<double> edge_sum(nv, 0);
   std::vector<int> edge_count(nv, 0);
   for (const auto& e : tmop::mesh_edges(from)) {
-    double l2 = 0;
-    for (int k = 0; k < from.space_dim; ++k) {
-      const double t = from.vertex(e[1])[k] - from.vertex(e[0])[k];
-      l2 += t * t;
-    }
-    for (int v : e) edge_sum[v] += std::sqrt(l2), ++edge_count[v];
+    double t[3] = {0, 0, 0};
+    for (int k = 0; k < from.space_dim; ++k) t[k] = from.vertex(e[1])[k] - from.vertex(e[0])[k];
+    const double l = norm3(t);
+    for (int v : e) edge_sum[v] += l, ++edge_count[v];
   }
   Displacement d;
   d.vertices = nv;
   int rel_count = 0;
   for (int v = 0; v < nv; ++v) {
-    double l2 = 0;
+    double t[3];
     for (int k = 0; k < 3; ++k) {
       const double p = k < from.space_dim ? from.vertex(v)[k] : 0;
       const double q = k < to.space_dim ? to.vertex(v)[k] : 0;
-      l2 += (q - p) * (q - p);
+      t[k] = q - p;
     }
-    const double u = std::sqrt(l2);
+    const double u = norm3(t);
     d.max = std::max(d.max, u);
     d.mean += u;
     d.rms += u * u;

@@ -95,6 +95,20 @@ TEST_F(TmopCompareTool, DifferentTopologyIsOneLineAndExitTwo) {
   EXPECT_EQ(exit_code(kTool + " --no_such_flag " + a_ + " " + b_ + " 2> /dev/null"), 2);
 }
 
+// Displacements relative to edge lengths at 1e-300 (squared lengths underflowed: h = 0, the
+// relative displacement infinite, printed null).
+TEST_F(TmopCompareTool, RelativeDisplacementAtTinyScale) {
+  Mesh a = testing_grid::grid(CellType::kQuad4, 4);
+  for (double& x : a.coords) x *= 1e-300;
+  Mesh b = a;
+  b.vertex(6)[0] += 0.05e-300;
+  const std::string ta = dir_ + "tiny_a.vtu", tb = dir_ + "tiny_b.vtu", json = dir_ + "tiny.json";
+  ASSERT_TRUE(write_mesh(ta, a).ok());
+  ASSERT_TRUE(write_mesh(tb, b).ok());
+  ASSERT_EQ(exit_code(kTool + " " + ta + " " + tb + " --json > " + json), 0);
+  EXPECT_NEAR(number_after(read_file(json), "b_minus_a", "max_relative"), 0.2, 1e-9);
+}
+
 // Issue 19: a directory crashed the tool (std::length_error); bad flag values exited 1.
 TEST_F(TmopCompareTool, DirectoriesAndBadFlagValuesExitTwoWithOneLine) {
   const std::string err = dir_ + "compare.err", d = dir_ + "compare_dir.vtu";

@@ -142,10 +142,15 @@ std::string read_file(const std::string& path, const std::string& ext) {
     if (!eof && have == want) {
       data.resize(static_cast<std::size_t>(std::max<std::uint64_t>(size, have)));
       fill();
-      // A file that grew while being read: the rest, in steps.
+      // A file that grew while being read: the rest, probed with a small buffer first so the
+      // common case (nothing more) does not reallocate the whole content.
       while (!eof) {
-        data.resize(have + kHead);
-        fill();
+        char probe[4096];
+        const ssize_t n = ::read(fd, probe, sizeof probe);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throw Error(path + ": read error (" + std::strerror(errno) + ")");
+        if (n == 0) break;
+        data.append(probe, static_cast<std::size_t>(n));
       }
     }
   } catch (...) {
