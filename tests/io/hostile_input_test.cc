@@ -156,6 +156,29 @@ TEST(HostileInput, VtuMessagesQuoteAttributesPrintablyAndBriefly) {
   }
 }
 
+// Names decoded from %XX and unknown section names reach messages only in printable form.
+TEST(HostileInput, LegacyMessagesQuoteFileTextPrintably) {
+  const std::string dir = test::temp_dir();
+  write_text(dir + "/n.vtk",
+             "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 3 double\n"
+             "0 0 0\n1 0 0\n0 1 0\nCELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n5\nPOINT_DATA 3\n"
+             "FIELD FieldData 1\n%1B]0;x%07%0A 1 2 double\n1 2\n");
+  std::string m = read_error(dir + "/n.vtk");
+  EXPECT_TRUE(printable_line(m)) << m;
+  EXPECT_NE(m.find("field array '?]0;x?"
+                   "?' has 2"),
+            std::string::npos)
+      << m;
+  write_text(dir + "/s.msh",
+             "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$\x1b[2J" + std::string(1 << 20, 'x') + "\n");
+  m = read_error(dir + "/s.msh");
+  EXPECT_TRUE(printable_line(m)) << m.substr(0, 100);
+  EXPECT_LT(m.size(), 300u);
+  write_text(dir + "/v.msh", "$MeshFormat\n\x1b[2J9.9 0 8\n$EndMeshFormat\n");
+  m = read_error(dir + "/v.msh");
+  EXPECT_TRUE(printable_line(m)) << m;
+}
+
 // The bad cell is reported at its own line (was: the CELL_TYPES / CELLS keyword's line).
 TEST(HostileInput, VtkCellErrorsPointAtTheCell) {
   const std::string dir = test::temp_dir();

@@ -149,10 +149,10 @@ class VtkReader {
     build_cells(offsets, conn, types);
     for (const DataArray& a : mesh_->point_data)
       if (a.values.size() != mesh_->coords.size() / 3 * a.components)
-        s_.fail("POINT_DATA array '" + a.name + "' does not have one value per point");
+        s_.fail("POINT_DATA array '" + printable(a.name) + "' does not have one value per point");
     for (const DataArray& a : mesh_->cell_data)
       if (a.values.size() != mesh_->cell_types.size() * a.components)
-        s_.fail("CELL_DATA array '" + a.name + "' does not have one value per cell");
+        s_.fail("CELL_DATA array '" + printable(a.name) + "' does not have one value per cell");
     std::string bad;
     if (!extract_tag_arrays(mesh_, &bad))
       s_.fail("tag array '" + bad + "' must hold one integer per cell");
@@ -430,7 +430,7 @@ class VtkReader {
       const std::int64_t tuples = s_.integer(0, kMaxInt32, "number of tuples");
       const std::string_view type = value_type();
       if (n >= 0 && tuples != n)
-        s_.fail_at(p, "field array '" + name + "' has " + std::to_string(tuples) +
+        s_.fail_at(p, "field array '" + printable(name) + "' has " + std::to_string(tuples) +
                           " tuples, expected " + std::to_string(n));
       add_array(name, static_cast<int>(comps), tuples, type, out);
       if (n < 0) out->pop_back();
@@ -577,7 +577,7 @@ class VtkWriter {
 
   void write_array(const DataArray& a, int items) {
     if (a.components < 1 || a.values.size() != static_cast<std::size_t>(items) * a.components)
-      throw Error("cannot write: data array '" + a.name + "' has " +
+      throw Error("cannot write: data array '" + printable(a.name) + "' has " +
                   std::to_string(a.values.size()) + " values for " + std::to_string(items) +
                   " items");
     const std::string name = encode_name(a.name);
