@@ -52,6 +52,7 @@
 
 #include "tmop/element/sample_points.h"
 #include "tmop/element/shape.h"
+#include "tmop/io/atomic_file.h"
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/orientation.h"
 #include "tmop/mesh/topology.h"
@@ -556,6 +557,7 @@ int main(int argc, char** argv) {
       "reproducible speed/scale runs with a JSON record\n"
       "  tmop_bench --input=MESH --task=shape|untangle|read|quality|evaluate|floor|perturb");
   tmop_tools::parse_flags(&argc, &argv);
+  tmop::remove_temporaries_on_signal("tmop_bench");
   FLAGS_minloglevel = FLAGS_verbose ? 1 : 3;
   google::InitGoogleLogging(argv[0]);
   if (FLAGS_input.empty()) return fail(2, "--input is required (see --help)");
@@ -638,9 +640,8 @@ int main(int argc, char** argv) {
   const std::string text = j.text();
   std::printf("%s\n", text.c_str());
   if (!FLAGS_json.empty()) {
-    std::ofstream out(FLAGS_json);
-    out << text << "\n";
-    if (!out.good()) return fail(2, FLAGS_json + ": cannot write");
+    const tmop::Status written = tmop::write_file_atomically(FLAGS_json, text + "\n");
+    if (!written.ok()) return fail(2, written.message());
   }
   return rc;
 }

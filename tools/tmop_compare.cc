@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "tmop/io/atomic_file.h"
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/quality_json.h"
@@ -59,24 +60,6 @@ constexpr int kUsageError = 2;
 int fail(const std::string& message) {
   tmop_tools::print_error("tmop_compare", message, {FLAGS_a, FLAGS_b, FLAGS_reference, FLAGS_svg});
   return kUsageError;
-}
-
-// gflags exits with 1 on an unknown flag; the tool contract says 2, so flags are checked first.
-bool flags_known(int argc, char** argv, std::string* error) {
-  for (int i = 1; i < argc; ++i) {
-    const char* arg = argv[i];
-    if (arg[0] != '-') continue;
-    std::string name = arg + (arg[1] == '-' ? 2 : 1);
-    name = name.substr(0, name.find('='));
-    gflags::CommandLineFlagInfo info;
-    if (gflags::GetCommandLineFlagInfo(name.c_str(), &info)) continue;
-    if (name.rfind("no", 0) == 0 && gflags::GetCommandLineFlagInfo(name.c_str() + 2, &info) &&
-        info.type == "bool")
-      continue;
-    *error = "unknown flag --" + name + " (see --help)";
-    return false;
-  }
-  return true;
 }
 
 bool same_topology(const tmop::Mesh& x, const tmop::Mesh& y) {
@@ -116,30 +99,32 @@ struct Displacement {
   double max = 0, mean = 0, rms = 0, max_rel = 0, mean_rel = 0, rms_rel = 0;
 };
 
+// |t|, also for meshes at 1e-310 or 1e300 (std::hypot scales, where squares would under- or
+// overflow).
+double norm3(const double* t) { return std::hypot(t[0], t[1], t[2]); }
+
 // |to - from| per vertex; relative to the mean length of the vertex's edges in `from`.
 Displacement displacement(const tmop::Mesh& from, const tmop::Mesh& to) {
   const int nv = from.num_vertices();
   std::vector<double> edge_sum(nv, 0);
   std::vector<int> edge_count(nv, 0);
   for (const auto& e : tmop::mesh_edges(from)) {
-    double l2 = 0;
-    for (int k = 0; k < from.space_dim; ++k) {
-      const double t = from.vertex(e[1])[k] - from.vertex(e[0])[k];
-      l2 += t * t;
-    }
-    for (int v : e) edge_sum[v] += std::sqrt(l2), ++edge_count[v];
+    double t[3] = {0, 0, 0};
+    for (int k = 0; k < from.space_dim; ++k) t[k] = from.vertex(e[1])[k] - from.vertex(e[0])[k];
+    const double l = norm3(t);
+    for (int v : e) edge_sum[v] += l, ++edge_count[v];
   }
   Displacement d;
   d.vertices = nv;
   int rel_count = 0;
   for (int v = 0; v < nv; ++v) {
-    double l2 = 0;
+    double t[3];
     for (int k = 0; k < 3; ++k) {
       const double p = k < from.space_dim ? from.vertex(v)[k] : 0;
       const double q = k < to.space_dim ? to.vertex(v)[k] : 0;
-      l2 += (q - p) * (q - p);
+      t[k] = q - p;
     }
-    const double u = std::sqrt(l2);
+    const double u = norm3(t);
     d.max = std::max(d.max, u);
     d.mean += u;
     d.rms += u * u;
@@ -288,15 +273,8 @@ int main(int argc, char** argv) {
       "Side-by-side quality of two meshes with the same topology, which is better on each "
       "measure, and their vertex displacements.\nExit codes: 0 success; 2 usage error, "
       "unreadable input or different topologies.");
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-help") == 0) {
-      gflags::ShowUsageWithFlagsRestrict(argv[0], "tmop_compare.cc");
-      return 0;
-    }
-  }
-  std::string error;
-  if (!flags_known(argc, argv, &error)) return fail(error);
   tmop_tools::parse_flags(&argc, &argv);
+  tmop::remove_temporaries_on_signal("tmop_compare");
   std::vector<std::string> positional(argv + 1, argv + argc);
   if (!positional.empty() && FLAGS_a.empty())
     FLAGS_a = positional[0], positional.erase(positional.begin());
@@ -317,7 +295,7 @@ int main(int argc, char** argv) {
   }
   for (std::size_t k = 1; k < in.size(); ++k)
     if (!same_topology(in[0].mesh, in[k].mesh))
-      return fail(in[k].file + " and " + in[0].file +
+      return fail(in[0].file + " and " + in[k].file +
                   " have different topologies (vertices or cells differ)");
   for (Input& i : in) i.report = tmop::compute_quality(i.mesh, options);
   const Input& a = in[in.size() - 2];
@@ -331,14 +309,8 @@ int main(int argc, char** argv) {
   }
   if (!FLAGS_svg.empty()) {
     const std::string svg = tmop::quality_svg_compare(a.report, b.report, a.file, b.file);
-    const std::string tmp = FLAGS_svg + ".tmp";
-    std::FILE* f = std::fopen(tmp.c_str(), "wb");
-    const bool ok = f && std::fwrite(svg.data(), 1, svg.size(), f) == svg.size();
-    if (f) std::fclose(f);
-    if (!ok || std::rename(tmp.c_str(), FLAGS_svg.c_str()) != 0) {
-      std::remove(tmp.c_str());
-      return fail(FLAGS_svg + ": cannot write");
-    }
+    const tmop::Status written = tmop::write_file_atomically(FLAGS_svg, svg);
+    if (!written.ok()) return fail(written.message());
   }
   if (FLAGS_json) {
     const std::string text = json_report(in, a, b, moves);

@@ -24,6 +24,7 @@
 #include <fstream>
 #include <string>
 
+#include "tmop/io/atomic_file.h"
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/orientation.h"
 #include "tmop/mesh/validate.h"
@@ -156,17 +157,6 @@ bool same_file(const std::string& a, const std::string& b) {
          sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
-bool write_text_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) return false;
-    out << text << "\n";
-    if (!out.good()) return false;
-  }
-  return std::rename(tmp.c_str(), path.c_str()) == 0;
-}
-
 // One line of the quality report (tmop_quality gives the whole report); returns the report.
 // keep_per_cell: keep the per-cell arrays (to refresh the mesh's quality fields with them).
 tmop::QualityReport print_quality(const char* label, const tmop::Mesh& mesh,
@@ -224,6 +214,8 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 4 << 20);
 #endif
   tmop_tools::parse_flags(&argc, &argv);
+  // Ctrl-C or a SIGTERM mid-run: temporary files removed, one line on stderr, exit 130.
+  tmop::remove_temporaries_on_signal("tmop_optimize");
   // Ceres reports through glog; the tool reports itself (one line on failure).
   FLAGS_minloglevel = FLAGS_verbose ? 1 : 3;
   google::InitGoogleLogging(argv[0]);
@@ -579,10 +571,11 @@ int main(int argc, char** argv) {
     std::printf("wrote %s\n", FLAGS_output.c_str());
   }
   // The report is written on failure too: that is when it is needed.
-  if (!FLAGS_report.empty() &&
-      !write_text_atomically(FLAGS_report,
-                             run_report(result, quality_before, quality_after, write, status)))
-    return fail(2, FLAGS_report + ": cannot write the report");
+  if (!FLAGS_report.empty()) {
+    s = write_file_atomically(
+        FLAGS_report, run_report(result, quality_before, quality_after, write, status) + "\n");
+    if (!s.ok()) return fail(2, s.message());
+  }
   if (!recipe_status.ok())
     return fail(1, FLAGS_input + ": " + recipe_status.message() + " (" + written_note + ")");
   return 0;

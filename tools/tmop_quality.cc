@@ -8,9 +8,9 @@
 
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <string>
 
+#include "tmop/io/atomic_file.h"
 #include "tmop/io/mesh_io.h"
 #include "tmop/quality/quality_fields.h"
 #include "tmop/quality/quality_json.h"
@@ -57,48 +57,6 @@ int fail(int code, const std::string& message) {
   return code;
 }
 
-// gflags exits with status 1 on unknown flags and bad values; the tool contract says 2. So the
-// command line is checked here first, with gflags' own registry, and gflags then parses it.
-bool check_command_line(int argc, char** argv, std::string* error) {
-  for (int i = 1; i < argc; ++i) {
-    std::string arg = argv[i];
-    if (arg == "--") break;
-    if (arg.size() < 2 || arg[0] != '-') {
-      *error = "unexpected argument '" + arg + "' (flags only; see --help)";
-      return false;
-    }
-    arg = arg.substr(arg[1] == '-' ? 2 : 1);
-    const std::size_t eq = arg.find('=');
-    std::string name = arg.substr(0, eq);
-    gflags::CommandLineFlagInfo info;
-    bool negated = false;
-    if (!gflags::GetCommandLineFlagInfo(name.c_str(), &info)) {
-      if (name.rfind("no", 0) == 0 && gflags::GetCommandLineFlagInfo(name.c_str() + 2, &info) &&
-          info.type == "bool" && eq == std::string::npos) {
-        negated = true;
-      } else {
-        *error = "unknown flag --" + name + " (see --help)";
-        return false;
-      }
-    }
-    if (negated || (info.type == "bool" && eq == std::string::npos)) continue;
-    std::string value;
-    if (eq != std::string::npos) {
-      value = arg.substr(eq + 1);
-    } else if (i + 1 < argc) {
-      value = argv[++i];
-    } else {
-      *error = "flag --" + name + " needs a value";
-      return false;
-    }
-    if (gflags::SetCommandLineOption(info.name.c_str(), value.c_str()).empty()) {
-      *error = "bad value '" + value + "' for --" + info.name;
-      return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -108,15 +66,11 @@ int main(int argc, char** argv) {
       "number, angles, dihedral angles, edge lengths; docs/quality.md) and prints a summary or "
       "the JSON report.\nExit codes: 0 success; 2 usage error or unreadable input; 1 an output "
       "file could not be written.");
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-help") == 0) {
-      gflags::ShowUsageWithFlagsRestrict(argv[0], "tmop_quality.cc");
-      return 0;
-    }
-  }
-  std::string error;
-  if (!check_command_line(argc, argv, &error)) return fail(kUsageError, error);
   tmop_tools::parse_flags(&argc, &argv);
+  tmop::remove_temporaries_on_signal("tmop_quality");
+  if (argc > 1)
+    return fail(kUsageError,
+                std::string("unexpected argument '") + argv[1] + "' (flags only; see --help)");
   if (FLAGS_input.empty()) return fail(kUsageError, "--input is required (see --help)");
   tmop::QualityOptions options;
   if (!tmop::sample_rule_from_name(FLAGS_sample_rule, &options.sample_rule))
@@ -134,9 +88,9 @@ int main(int argc, char** argv) {
   std::fwrite(text.data(), 1, text.size(), stdout);
 
   if (!FLAGS_svg.empty()) {
-    std::ofstream out(FLAGS_svg, std::ios::binary);
-    out << tmop::quality_svg(mesh, report);
-    if (!out.flush()) return fail(kOutputError, FLAGS_svg + ": cannot write");
+    const tmop::Status written =
+        tmop::write_file_atomically(FLAGS_svg, tmop::quality_svg(mesh, report));
+    if (!written.ok()) return fail(kOutputError, written.message());
   }
   if (!FLAGS_output.empty()) {
     tmop::add_quality_fields(report, &mesh);

@@ -75,7 +75,7 @@ TEST(BadInput, MessagesNameTheProblemAndItsPlace) {
       {"mixed_dimensions41.msh", "mixed_dimensions41.msh:18: element type tet4 (dimension 3)"},
       {"mixed_dimensions.mesh", "mixed_dimensions.mesh:9: Tetrahedra (3D cells) in a Dimension 2"},
       {"index_out_of_range.mesh", "index_out_of_range.mesh:10: vertex index 4 out of range 1..3"},
-      {"unknown_cell_type.vtk", "unknown_cell_type.vtk:9: cell 0: unsupported VTK cell type 42"},
+      {"unknown_cell_type.vtk", "unknown_cell_type.vtk:10: cell 0: unsupported VTK cell type 42"},
       {"huge_point_count.vtk", "huge_point_count.vtk:5: declared value count 2999999997"},
       {"wrong_byte_count.vtu", "declares 1000 bytes"},
       {"truncated_binary22.msh", "truncated_binary22.msh:byte "},
@@ -122,7 +122,8 @@ TEST(BadInput, MissingFileAndDirectory) {
   Mesh mesh;
   Status s = read_mesh("/nonexistent/dir/mesh.msh", &mesh);
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.message(), "/nonexistent/dir/mesh.msh: cannot open for reading");
+  EXPECT_EQ(s.message(),
+            "/nonexistent/dir/mesh.msh: cannot open for reading (No such file or directory)");
   s = read_mesh(std::string(TMOP_SOURCE_DIR) + "/tests/data/bad", &mesh);
   EXPECT_FALSE(s.ok());
 }

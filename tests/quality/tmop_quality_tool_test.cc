@@ -2,6 +2,7 @@
 // are not built in this build tree.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -95,6 +96,53 @@ TEST_F(TmopQualityTool, SummaryIsTheDefault) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("mean ratio"), std::string::npos);
   EXPECT_NE(text.find("tet4 48"), std::string::npos);
+}
+
+std::string slurp_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Issue 19: a directory as input crashed (SIGABRT, std::length_error) or, named ".", was an
+// "unknown mesh file extension '.'"; --help / --version / bad values follow the tool contract.
+TEST_F(TmopQualityTool, DirectoriesHelpVersionAndBadValues) {
+  const std::string err = dir_ + "tool.err", out = dir_ + "tool.out", d = dir_ + "tool_dir.msh";
+  ASSERT_EQ(exit_code("mkdir -p " + d), 0);
+  EXPECT_EQ(exit_code(kTool + " --input=" + d + " 2> " + err), 2);
+  EXPECT_EQ(slurp_file(err), d + ": not a regular file (a directory)\n");
+  EXPECT_EQ(exit_code("cd " + dir_ + " && " + kTool + " --input=. 2> " + err), 2);
+  EXPECT_EQ(slurp_file(err), ".: not a regular file (a directory)\n");
+  EXPECT_EQ(exit_code(kTool + " --input=" + input_ + " --threads=abc 2> " + err), 2);
+  EXPECT_EQ(slurp_file(err), "tmop_quality: bad value 'abc' for --threads (expected an integer)\n");
+  EXPECT_EQ(exit_code(kTool + " --help > " + out), 0);
+  EXPECT_NE(slurp_file(out).find("-sample_rule"), std::string::npos);
+  EXPECT_EQ(exit_code(kTool + " --version > " + out), 0);
+  EXPECT_EQ(slurp_file(out).rfind("tmop_quality 0.", 0), 0u) << slurp_file(out);
+}
+
+// --svg goes through the atomic writer: a failed write leaves neither a truncated SVG under the
+// final name nor a temporary file.
+TEST_F(TmopQualityTool, SvgIsWrittenAtomically) {
+  const std::string sub = dir_ + "svg_sub";
+  ASSERT_EQ(exit_code("rm -rf " + sub + " && mkdir -p " + sub), 0);
+  EXPECT_EQ(exit_code(kTool + " --input=" + input_ + " --svg=" + sub + "/q.svg > /dev/null"), 0);
+  EXPECT_NE(slurp_file(sub + "/q.svg").find("</svg>"), std::string::npos);
+  EXPECT_EQ(exit_code("test $(ls -A " + sub + " | wc -l) -eq 1"), 0);  // no temporaries
+  // The rename fails (the target is a directory): exit 1, no temporary left.
+  ASSERT_EQ(exit_code("mkdir " + sub + "/d.svg"), 0);
+  EXPECT_EQ(exit_code(kTool + " --input=" + input_ + " --svg=" + sub + "/d.svg > /dev/null 2>&1"),
+            1);
+  EXPECT_EQ(exit_code("test $(ls -A " + sub + " | wc -l) -eq 2"), 0);
+  EXPECT_EQ(exit_code("rmdir " + sub + "/d.svg"), 0);
+  // Unwritable directory: exit 1, the old picture untouched, nothing else left.
+  if (::geteuid() == 0) GTEST_SKIP() << "root can write anywhere";
+  const std::string before = slurp_file(sub + "/q.svg");
+  ASSERT_EQ(exit_code("chmod 555 " + sub), 0);
+  EXPECT_EQ(exit_code(kTool + " --input=" + input_ + " --svg=" + sub + "/q.svg > /dev/null 2>&1"),
+            1);
+  ASSERT_EQ(exit_code("chmod 755 " + sub), 0);
+  EXPECT_EQ(slurp_file(sub + "/q.svg"), before);
+  EXPECT_EQ(exit_code("test $(ls -A " + sub + " | wc -l) -eq 1"), 0);
 }
 
 }  // namespace

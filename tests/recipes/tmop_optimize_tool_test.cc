@@ -1,14 +1,18 @@
 // tmop_optimize's exit-code contract (README): 0 success, 1 the optimization cannot reach its
 // goal, 2 bad input or usage, always one line on stderr; --write_on_failure writes the better of
 // the input and the result and still exits 1.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <random>
 #include <sstream>
 #include <string>
 
@@ -276,6 +280,125 @@ TEST_F(TmopOptimizeTool, GeometryAndRecipeAreCheckedBeforeAnyWork) {
                 &err),
             0)
       << err;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+// Issue 19, item 8: --help shows tmop's flags only (not glog's) and exits 0; --version names the
+// version; a bad flag value is a usage error (2), not gflags' 1.
+TEST_F(TmopOptimizeTool, HelpVersionAndBadFlagValues) {
+  std::string err;
+  EXPECT_EQ(run("--help", &err), 0) << err;
+  const std::string help = slurp(dir_ + "/out.txt");
+  EXPECT_NE(help.find("-recipe"), std::string::npos);
+  EXPECT_EQ(help.find("logtostderr"), std::string::npos);
+  EXPECT_EQ(help.find("flagfile"), std::string::npos);
+  EXPECT_EQ(run("--version", &err), 0) << err;
+  EXPECT_EQ(slurp(dir_ + "/out.txt").rfind("tmop_optimize 0.", 0), 0u);
+  const std::string io = "--input=" + dir_ + "/grid.msh --output=" + dir_ + "/o.vtu ";
+  for (const std::string& bad : {std::string("--threads=abc"), std::string("--power=x"),
+                                 std::string("--verbose=maybe"), std::string("--max_iterations")}) {
+    EXPECT_EQ(run(io + bad, &err), 2) << bad << ": " << err;
+    EXPECT_EQ(lines(err), 1) << bad << ": " << err;
+  }
+  EXPECT_EQ(run(io + "--threads=abc", &err), 2);
+  EXPECT_EQ(err, "tmop_optimize: bad value 'abc' for --threads (expected an integer)\n");
+}
+
+// Issue 19, item 1: a directory crashed the tool (std::length_error) as --input, --reference or
+// --moved.
+TEST_F(TmopOptimizeTool, DirectoryInputsAreOneLineExitTwo) {
+  const std::string d = dir_ + "/d.msh";
+  ASSERT_EQ(std::system(("mkdir " + d).c_str()), 0);
+  const std::string in = "--input=" + dir_ + "/grid.msh --output=" + dir_ + "/o.vtu ";
+  for (const std::string& args : {"--input=" + d + " --output=" + dir_ + "/o.vtu",
+                                  in + "--reference=" + d, in + "--recipe=preserve --moved=" + d}) {
+    std::string err;
+    EXPECT_EQ(run(args, &err), 2) << args;
+    EXPECT_EQ(err, d + ": not a regular file (a directory)\n") << args;
+  }
+}
+
+// Issue 19, item 7: the report went through a fixed REPORT.tmp (a user's file of that name was
+// clobbered); now a unique temporary, nothing left behind. run.before names its measure.
+TEST_F(TmopOptimizeTool, ReportUsesTheAtomicWriterAndNamesItsMeasure) {
+  const std::string report = dir_ + "/r.json";
+  { std::ofstream(report + ".tmp") << "mine"; }
+  std::string err;
+  ASSERT_EQ(
+      run("--input=" + dir_ + "/grid.msh --output=" + dir_ + "/o.vtu --report=" + report, &err), 0)
+      << err;
+  EXPECT_EQ(slurp(report + ".tmp"), "mine");
+  const std::string json = slurp(report);
+  const std::size_t before = json.find("\"before\": {\"min_quality\": ");
+  ASSERT_NE(before, std::string::npos) << json.substr(0, 400);
+  // In "before" itself, ahead of "after".
+  EXPECT_LT(json.find("\"min_quality_measure\": \"sample_mean_ratio\"", before),
+            json.find("\"after\"", before))
+      << json.substr(before, 200);
+  EXPECT_EQ(std::system(("ls -A " + dir_ + " | grep -q tmp-").c_str()) == 0, false);
+}
+
+// Issue 19, item 7: SIGINT / SIGTERM mid-run leave no temporary file and exit 130 with one line.
+TEST_F(TmopOptimizeTool, SignalsMidRunExit130WithOneLineAndLeaveNothing) {
+  // stdout is a pipe here: line-buffer it so "before:" arrives when printed.
+  if (std::system("command -v stdbuf > /dev/null") != 0) GTEST_SKIP() << "no stdbuf";
+  // 28,800 triangles, interior vertices jittered by up to h/10 per coordinate (none inverts):
+  // the shape stage runs for seconds.
+  const int n = 120;
+  Mesh m = testing_grid::grid(CellType::kTri3, n);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-0.1 / n, 0.1 / n);
+  for (int v = 0; v < m.num_vertices(); ++v) {
+    const int i = v % (n + 1), j = v / (n + 1);
+    if (i == 0 || j == 0 || i == n || j == n) continue;
+    m.vertex(v)[0] += u(rng);
+    m.vertex(v)[1] += u(rng);
+  }
+  ASSERT_TRUE(write_mesh(dir_ + "/big.msh", m).ok());
+  for (int sig : {SIGINT, SIGTERM}) {
+    const std::string out = dir_ + "/sig", errf = dir_ + "/sig_err.txt";
+    ASSERT_EQ(std::system(("rm -rf " + out + " && mkdir " + out).c_str()), 0);
+    int pipe_fd[2];
+    ASSERT_EQ(pipe(pipe_fd), 0);
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      dup2(pipe_fd[1], 1);
+      const int e = open(errf.c_str(), O_CREAT | O_WRONLY | O_TRUNC, 0644);
+      dup2(e, 2);
+      close(pipe_fd[0]);
+      const std::string input = "--input=" + dir_ + "/big.msh";
+      const std::string output = "--output=" + out + "/o.vtu";
+      const std::string report = "--report=" + out + "/r.json";
+      execlp("stdbuf", "stdbuf", "-oL", tool_.c_str(), input.c_str(), output.c_str(),
+             report.c_str(), "--recipe=shape", "--max_iterations=100000", "--function_tolerance=0",
+             "--threads=1", static_cast<char*>(nullptr));
+      _exit(99);
+    }
+    close(pipe_fd[1]);
+    // The run has started once the input's quality line is printed.
+    std::string seen;
+    char buf[256];
+    ssize_t n;
+    while (seen.find("before:") == std::string::npos && (n = read(pipe_fd[0], buf, sizeof buf)) > 0)
+      seen.append(buf, static_cast<std::size_t>(n));
+    kill(pid, sig);
+    while (read(pipe_fd[0], buf, sizeof buf) > 0) {
+    }
+    close(pipe_fd[0]);
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFEXITED(status)) << seen;
+    EXPECT_EQ(WEXITSTATUS(status), 130) << seen;
+    EXPECT_EQ(slurp(errf), std::string("tmop_optimize: interrupted by ") +
+                               (sig == SIGINT ? "SIGINT" : "SIGTERM") +
+                               "; no partial output left\n");
+    EXPECT_EQ(std::system(("test -z \"$(ls -A " + out + ")\"").c_str()), 0);
+  }
 }
 
 }  // namespace

@@ -21,6 +21,7 @@ void write_msh(const Mesh& mesh, const WriteOptions& options, std::string* out);
 
 void read_vtk(const std::string& path, const std::string& data, Mesh* mesh);
 void write_vtk(const Mesh& mesh, const WriteOptions& options, std::string* out);
+void check_vtk_writable(const Mesh& mesh);
 
 void read_vtu(const std::string& path, const std::string& data, Mesh* mesh);
 void write_vtu(const Mesh& mesh, const WriteOptions& options, std::string* out);

@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cstdio>
 
+#include "tmop/io/atomic_file.h"
 #include "tmop/io/formats.h"
 #include "tmop/io/scanner.h"
 
@@ -31,42 +32,6 @@ bool is_openmesh_ext(const std::string& ext) {
 }
 
 const char* kKnown = "known: .msh .vtk .vtu .mesh .obj .off .ply .stl";
-
-// A temporary file next to `path` (same directory, so rename() is atomic), keeping the
-// extension as the suffix because OpenMesh picks its writer by extension.
-std::string make_temp(const std::string& path, const std::string& ext, int* fd) {
-  const std::size_t slash = path.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash);
-  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-  const std::string suffix = "." + ext;
-  std::string tmpl = dir + "/." + base + ".tmp-XXXXXX" + suffix;
-  *fd = mkstemps(&tmpl[0], static_cast<int>(suffix.size()));
-  if (*fd < 0) throw Error(path + ": cannot create a temporary file in " + dir);
-  // mkstemps creates the file 0600; an output file gets the usual 0666 minus the umask.
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
-  ::fchmod(*fd, 0666 & ~mask);
-  return tmpl;
-}
-
-void write_atomically(const std::string& path, const std::string& ext, const std::string& bytes) {
-  int fd = -1;
-  const std::string tmp = make_temp(path, ext, &fd);
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n <= 0) {
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      throw Error(path + ": write error (disk full?)");
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  if (::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
-    ::unlink(tmp.c_str());
-    throw Error(path + ": cannot write (rename of the temporary file failed)");
-  }
-}
 
 }  // namespace
 
@@ -110,11 +75,13 @@ Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair) {
   if (repair) *repair = SurfaceRepair();
   const std::string ext = extension(path);
   try {
+    // A directory (or a device, a FIFO) is refused as such, whatever its name ends with.
+    io::check_regular_file(path);
     if (ext != "msh" && ext != "vtk" && ext != "vtu" && ext != "mesh" && ext != "stl" &&
         !is_openmesh_ext(ext))
       return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
                              ")");
-    const std::string data = io::read_file(path);
+    const std::string data = io::read_file(path, ext);
     if (ext == "msh") io::read_msh(path, data, mesh);
     if (ext == "vtk") io::read_vtk(path, data, mesh);
     if (ext == "vtu") io::read_vtu(path, data, mesh);
@@ -167,6 +134,7 @@ void check_writable_or_throw(const std::string& path, const Mesh& mesh,
                 " (22 and 41 are supported)");
   try {
     if (ext == "mesh") io::check_medit_writable(mesh);
+    if (ext == "vtk") io::check_vtk_writable(mesh);
     if (ext == "stl") io::check_stl_writable(mesh, options);
     if (is_openmesh_ext(ext)) io::check_openmesh_writable(ext, mesh);
   } catch (const Error& e) {
@@ -208,19 +176,15 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
   try {
     check_writable_or_throw(path, mesh, options);
     if (is_openmesh_ext(ext)) {
-      int fd = -1;
-      const std::string tmp = make_temp(path, ext, &fd);
-      ::close(fd);
+      // OpenMesh picks its writer by the extension, which the temporary file keeps.
+      TempFile tmp(path, ext);
+      tmp.close_fd();
       try {
-        io::write_openmesh(tmp, ext, mesh, options);
+        io::write_openmesh(tmp.name(), ext, mesh, options);
       } catch (const Error& e) {
-        ::unlink(tmp.c_str());
         throw Error(path + ": " + e.what());
       }
-      if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        ::unlink(tmp.c_str());
-        return Status::Failure(path + ": cannot write (rename of the temporary file failed)");
-      }
+      tmp.commit();
       return Status::Ok();
     }
     std::string bytes;
@@ -238,7 +202,8 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
     } catch (const Error& e) {
       throw Error(path + ": " + e.what());
     }
-    write_atomically(path, ext, bytes);
+    const Status written = write_file_atomically(path, bytes);
+    if (!written.ok()) return written;
   } catch (const Error& e) {
     return Status::Failure(e.what());
   } catch (const std::bad_alloc&) {

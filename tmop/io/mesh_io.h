@@ -17,18 +17,24 @@
 //   tags to Mesh::cell_entity, named fields to point_data / cell_data. On failure *mesh is left
 //   empty and the Status message is one line "FILE:LINE: what is wrong" ("FILE:byte N: ..." in
 //   binary data; "FILE: ..." when there is no position, e.g. the file cannot be opened).
-//   Declared counts are checked against the file size before anything is allocated.
-// write_mesh: writes atomically (a temporary file in the same directory, then rename), so OUT
-//   either holds the complete new file or is untouched. 2D meshes are written with z = 0.
-//   Fails (Status "OUT: cannot write ...", no file written) when the format cannot hold the mesh
-//   (a tet or a quad in .stl, quadratic or 3D cells in .obj/.off/.ply, no faces at all in a
-//   surface format, quad9 / hex27 / points in .mesh) or on I/O errors.
+//   Declared counts are checked against the file size before anything is allocated. Only
+//   regular files are read ("FILE: not a regular file (a directory)"; FIFOs and devices are
+//   refused before they are opened), and the first 64 KiB must be a possible start of the
+//   format (io/scanner.h, check_magic) before the rest is read.
+// write_mesh: writes atomically (io/atomic_file.h: a uniquely named temporary file in the same
+//   directory, then rename; removed on failure and on SIGINT/SIGTERM once a tool installed
+//   remove_temporaries_on_signal), so OUT either holds the complete new file or is untouched. 2D
+//   meshes are written with z = 0. Fails (Status "OUT: cannot write ...", no file written) when the
+//   format cannot hold the mesh (a tet or a quad in .stl, quadratic or 3D cells in .obj/.off/.ply,
+//   no faces at all in a surface format, quad9 / hex27 / points in .mesh) or on I/O errors.
 // check_writable: the checks write_mesh makes before writing, without writing: known extension,
 //   a consistent Mesh, cells the format can hold (for .obj/.off/.ply also a surface OpenMesh can
 //   build) and an existing, writable output directory. Linear in the mesh size, no file is
 //   created. Tools call it before a long computation whose result would be refused; it depends
-//   only on the cell types and connectivity (and, for binary .stl, on coordinates fitting in
-//   float32), which node movement does not change.
+//   on the cell types, connectivity and data-array names (.vtk refuses an unnamed array), which
+//   node movement does not change, and for .stl on coordinates: binary ones must fit in float32,
+//   and no triangle may have two corners at one point (in float32 for binary), since STL keeps
+//   corners by coordinates and such a file would not read back. write_mesh checks again.
 // docs/formats.md describes node-order conversions and the tag mapping of every format.
 #ifndef TMOP_IO_MESH_IO_H_
 #define TMOP_IO_MESH_IO_H_

@@ -73,7 +73,7 @@ class MshReader {
     } else if (version == "2.2" || version == "2.1" || version == "2" || version == "2.0") {
       v4_ = false;
     } else {
-      s_.fail_at(vpos, "unsupported MSH version " + std::string(version) + " (2.2 and 4.1 are)");
+      s_.fail_at(vpos, "unsupported MSH version " + printable(version) + " (2.2 and 4.1 are)");
     }
     binary_ = s_.integer(0, 1, "file type (0 ascii, 1 binary)") == 1;
     const std::size_t dpos = s_.pos();
@@ -106,7 +106,7 @@ class MshReader {
     const std::string end = "$End" + std::string(name.substr(1));
     const std::size_t e = s_.data().find(end, s_.pos());
     if (e == std::string_view::npos)
-      s_.fail_at(start, "section " + std::string(name) + " has no " + end);
+      s_.fail_at(start, "section " + printable(name) + " has no " + printable(end));
     s_.set_pos(e + end.size());
   }
 

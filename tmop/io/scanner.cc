@@ -1,28 +1,163 @@
 #include "tmop/io/scanner.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 namespace tmop {
 namespace io {
 
-std::string read_file(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) throw Error(path + ": cannot open for reading");
-  std::string data;
-  if (std::fseek(f, 0, SEEK_END) == 0) {
-    long size = std::ftell(f);
-    if (size > 0) data.reserve(static_cast<std::size_t>(size));
-    std::fseek(f, 0, SEEK_SET);
+namespace {
+
+// What a non-regular file is, for the message.
+const char* file_kind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+[[noreturn]] void not_regular(const std::string& path, mode_t mode) {
+  throw Error(path + ": not a regular file (" + file_kind(mode) + ")");
+}
+
+std::size_t skip_spaces(std::string_view s, std::size_t i) {
+  while (i < s.size() && is_space(s[i])) ++i;
+  return i;
+}
+
+// The first whitespace-separated token at or after i (it may be cut by the end of the prefix).
+std::string_view first_token(std::string_view s, std::size_t* i) {
+  *i = skip_spaces(s, *i);
+  std::size_t e = *i;
+  while (e < s.size() && !is_space(s[e])) ++e;
+  return s.substr(*i, e - *i);
+}
+
+// t is `word`, or (cut by the end of the prefix) the start of it.
+bool token_is(std::string_view t, std::string_view word, bool cut) {
+  return t == word || (cut && word.substr(0, t.size()) == t);
+}
+
+}  // namespace
+
+void check_regular_file(const std::string& path) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) not_regular(path, st.st_mode);
+}
+
+void check_magic(const std::string& path, const std::string& ext, std::string_view head,
+                 std::uint64_t size) {
+  Scanner s(path, head);
+  const bool whole = head.size() == size;  // the head is the whole file
+  std::size_t i = 0;
+  if (ext == "msh") {
+    const std::string_view t = first_token(head, &i);
+    if (i == head.size()) return;  // only whitespace so far: the reader decides
+    if (!token_is(t, "$MeshFormat", !whole && i + t.size() == head.size()))
+      s.fail_at(i, "not a Gmsh file: expected $MeshFormat");
+  } else if (ext == "vtk") {
+    const std::string_view magic = "# vtk DataFile Version";
+    const std::string_view start = head.substr(0, magic.size());
+    if (!head.empty() && (start != magic.substr(0, start.size()) ||
+                          (whole && start.size() < magic.size() && head.find('\n') < magic.size())))
+      s.fail_at(0, "not a VTK legacy file: first line must be '# vtk DataFile Version x.y'");
+  } else if (ext == "vtu") {
+    if (head.substr(0, 3) == "\xEF\xBB\xBF") i = 3;  // UTF-8 byte order mark
+    i = skip_spaces(head, i);
+    if (i < head.size() && head[i] != '<')
+      s.fail_at(i, "not a VTK XML file: expected '<' (an XML document), got '" +
+                       printable(head.substr(i, 8)) + "'");
+  } else if (ext == "stl") {
+    // Binary: an 80-byte header and a triangle count that the file size matches exactly.
+    std::uint32_t n = 0;
+    if (head.size() >= 84) std::memcpy(&n, head.data() + 80, 4);
+    if (size >= 84 && static_cast<std::uint64_t>(n) * 50 + 84 == size) return;
+    const std::string_view t = first_token(head, &i);
+    if (i == head.size()) return;
+    std::string lower(t.substr(0, 5));
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (token_is(lower, "solid", !whole && i + t.size() == head.size())) return;
+    if (size < 84) s.fail_byte(size, "binary STL shorter than its 84-byte header");
+    s.fail_byte(80, "binary STL declares " + std::to_string(n) + " triangles, the file size " +
+                        std::to_string(size) + " does not match");
+  } else if (ext == "ply") {
+    const std::string_view t = first_token(head, &i);
+    if (i < head.size() && !token_is(t, "ply", !whole && i + t.size() == head.size()))
+      s.fail_at(0, "not a PLY file: expected 'ply'");
+  } else if (ext == "mesh" || ext == "obj" || ext == "off") {
+    // Text (OFF BINARY only after its header line): a NUL byte before the first line ends is
+    // binary data.
+    const std::size_t nul = head.substr(0, head.find('\n')).find('\0');
+    if (nul != std::string_view::npos)
+      s.fail_at(nul, "binary data (a NUL byte) where a text file was expected");
   }
-  char buf[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof(buf), f)) > 0) data.append(buf, n);
-  const bool bad = std::ferror(f);
-  std::fclose(f);
-  if (bad) throw Error(path + ": read error");
+}
+
+std::string read_file(const std::string& path, const std::string& ext) {
+  // stat first: opening a FIFO blocks, a device never ends, a directory "reads" as empty.
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0)
+    throw Error(path + ": cannot open for reading (" + std::strerror(errno) + ")");
+  if (!S_ISREG(st.st_mode)) not_regular(path, st.st_mode);
+  // O_NONBLOCK: if the path was swapped for a FIFO since the stat, open does not wait for it.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) throw Error(path + ": cannot open for reading (" + std::strerror(errno) + ")");
+  std::string data;
+  try {
+    if (::fstat(fd, &st) != 0) throw Error(path + ": cannot open for reading");
+    if (!S_ISREG(st.st_mode)) not_regular(path, st.st_mode);
+    const std::uint64_t size = static_cast<std::uint64_t>(st.st_size);
+    // The first bytes decide whether the rest is worth reading: a 3 GB file of NUL bytes named
+    // .msh fails here, after 64 KiB.
+    constexpr std::size_t kHead = 1 << 16;
+    std::size_t want = static_cast<std::size_t>(std::min<std::uint64_t>(size, kHead));
+    data.resize(want);
+    std::size_t have = 0;
+    bool eof = false;
+    auto fill = [&]() {
+      while (have < data.size()) {
+        const ssize_t n = ::read(fd, &data[have], data.size() - have);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throw Error(path + ": read error (" + std::strerror(errno) + ")");
+        if (n == 0) {
+          eof = true;
+          break;
+        }
+        have += static_cast<std::size_t>(n);
+      }
+      data.resize(have);
+    };
+    fill();
+    check_magic(path, ext, data, eof ? have : std::max<std::uint64_t>(size, have));
+    if (!eof && have == want) {
+      data.resize(static_cast<std::size_t>(std::max<std::uint64_t>(size, have)));
+      fill();
+      // A file that grew while being read: the rest, probed with a small buffer first so the
+      // common case (nothing more) does not reallocate the whole content.
+      while (!eof) {
+        char probe[4096];
+        const ssize_t n = ::read(fd, probe, sizeof probe);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throw Error(path + ": read error (" + std::strerror(errno) + ")");
+        if (n == 0) break;
+        data.append(probe, static_cast<std::size_t>(n));
+      }
+    }
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  ::close(fd);
   return data;
 }
 

@@ -21,8 +21,19 @@
 namespace tmop {
 namespace io {
 
-// Reads the whole file; throws Error("FILE: cannot open ...") on failure.
-std::string read_file(const std::string& path);
+// Reads the whole file; throws Error("FILE: ...") on failure. Only regular files are read (a
+// directory, FIFO or device is refused before it is opened for reading); the first 64 KiB are
+// checked by check_magic before the rest is read, so a large file of the wrong kind costs 64 KiB.
+std::string read_file(const std::string& path, const std::string& ext);
+// Throws Error("FILE: not a regular file (a directory)") when path exists and is not a regular
+// file (symlinks followed); nothing when it is one or does not exist.
+void check_regular_file(const std::string& path);
+// Throws the located Error the reader of format `ext` (lower case, no dot) would throw at once
+// when `head`, the first bytes of a file of `size` bytes, cannot start such a file (a Gmsh file
+// without $MeshFormat, a binary STL whose size does not match its count, ...). Lenient where the
+// head is cut: only what the head shows is judged; the reader checks the rest.
+void check_magic(const std::string& path, const std::string& ext, std::string_view head,
+                 std::uint64_t size);
 
 class Scanner {
  public:

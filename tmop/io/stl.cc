@@ -212,6 +212,28 @@ void check_stl_writable(const Mesh& mesh, const WriteOptions& options) {
     ++triangles;
   }
   if (triangles == 0) throw Error("cannot write a mesh without triangles to .stl");
+  // STL stores each triangle's corners by their coordinates; a reader (tmop's too) cannot hold
+  // a triangle with two equal corners, so such a file would not read back. Compared as written:
+  // float32 in binary STL (corners 1e-9 apart collapse), exact doubles in ASCII. Equal vertices
+  // in different triangles are fine: the reader merges them into one.
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (mesh.cell_types[c] != CellType::kTri3) continue;
+    double x[3][3];
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j) {
+        const double v = coord(mesh, mesh.cell(c)[k], j);
+        x[k][j] = (options.binary ? static_cast<double>(static_cast<float>(v)) : v) + 0.0;
+      }
+    for (int k = 0; k < 3; ++k) {
+      const int l = (k + 1) % 3;
+      if (x[k][0] == x[l][0] && x[k][1] == x[l][1] && x[k][2] == x[l][2])
+        throw Error("cannot write triangle " + std::to_string(c) + " to " +
+                    (options.binary ? "binary .stl: its vertices " : ".stl: its vertices ") +
+                    std::to_string(mesh.cell(c)[k]) + " and " + std::to_string(mesh.cell(c)[l]) +
+                    (options.binary ? " are one point in float32" : " are one point") +
+                    " (STL keeps corners by coordinates: the file would not read back)");
+    }
+  }
   if (options.binary) {
     const double max = std::numeric_limits<float>::max();
     for (int v = 0; v < mesh.num_vertices(); ++v)

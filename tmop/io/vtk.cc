@@ -33,11 +33,20 @@ int type_size(std::string_view t) {
   return 0;
 }
 
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// VTK's name encoding (vtkDataWriter::EncodeString): %XX for a space, '%', '"' and bytes outside
+// printable ASCII, so any name is one token.
 std::string decode_name(std::string_view n) {
   std::string out;
   for (std::size_t i = 0; i < n.size(); ++i) {
-    if (n[i] == '%' && i + 2 < n.size() && n[i + 1] == '2' && n[i + 2] == '0') {
-      out.push_back(' ');
+    if (n[i] == '%' && i + 2 < n.size() && hex_digit(n[i + 1]) >= 0 && hex_digit(n[i + 2]) >= 0) {
+      out.push_back(static_cast<char>(hex_digit(n[i + 1]) * 16 + hex_digit(n[i + 2])));
       i += 2;
     } else {
       out.push_back(n[i]);
@@ -47,12 +56,17 @@ std::string decode_name(std::string_view n) {
 }
 
 std::string encode_name(const std::string& n) {
+  static const char* kHex = "0123456789ABCDEF";
   std::string out;
-  for (char c : n) {
-    if (c == ' ')
-      out += "%20";
-    else
-      out.push_back(c);
+  for (char ch : n) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if (c <= 32 || c >= 127 || c == '%' || c == '"') {
+      out.push_back('%');
+      out.push_back(kHex[c >> 4]);
+      out.push_back(kHex[c & 15]);
+    } else {
+      out.push_back(ch);
+    }
   }
   return out;
 }
@@ -103,6 +117,7 @@ class VtkReader {
         have_points = true;
       } else if (poly && (t == "VERTICES" || t == "LINES" || t == "POLYGONS")) {
         cells_pos_ = types_pos_ = p;
+        flat_ = types_at_ = offsets_at_ = conn_at_ = ValuesAt();
         read_poly_section(t, p, &offsets, &conn, &types);
       } else if (t == "CELLS" && !poly) {
         cells_pos_ = p;
@@ -113,6 +128,7 @@ class VtkReader {
         const std::int64_t n = s_.integer(0, kMaxInt32 - 1, "number of cell types");
         if (binary_) s_.skip_line();
         check_count(n, "int");
+        types_at_ = values_at("int");
         read_ints(n, "int", &types, "cell type");
         have_types = true;
       } else if (t == "CELL_DATA" || t == "POINT_DATA") {
@@ -133,10 +149,10 @@ class VtkReader {
     build_cells(offsets, conn, types);
     for (const DataArray& a : mesh_->point_data)
       if (a.values.size() != mesh_->coords.size() / 3 * a.components)
-        s_.fail("POINT_DATA array '" + a.name + "' does not have one value per point");
+        s_.fail("POINT_DATA array '" + printable(a.name) + "' does not have one value per point");
     for (const DataArray& a : mesh_->cell_data)
       if (a.values.size() != mesh_->cell_types.size() * a.components)
-        s_.fail("CELL_DATA array '" + a.name + "' does not have one value per cell");
+        s_.fail("CELL_DATA array '" + printable(a.name) + "' does not have one value per cell");
     std::string bad;
     if (!extract_tag_arrays(mesh_, &bad))
       s_.fail("tag array '" + bad + "' must hold one integer per cell");
@@ -235,10 +251,13 @@ class VtkReader {
     if (s_.try_token(&t) && t == "OFFSETS") {  // version 5.1 layout
       const std::string_view otype = value_type();
       check_count(a, otype);
+      offsets_at_ = values_at(otype);
       read_ints(a, otype, offsets, "cell offset");
       keyword("CONNECTIVITY");
       const std::string_view ctype = value_type();
       check_count(b, ctype);
+      conn_at_ = values_at(ctype);
+      flat_ = ValuesAt();
       read_ints(b, ctype, conn, "cell node index");
       if (!offsets->empty() && ((*offsets)[0] != 0 || offsets->back() != b))
         s_.fail("OFFSETS must start at 0 and end at the CONNECTIVITY size");
@@ -247,6 +266,8 @@ class VtkReader {
     s_.set_pos(save);
     if (binary_) s_.skip_line();
     check_count(b, "int");
+    flat_ = values_at("int");
+    offsets_at_ = conn_at_ = ValuesAt();
     std::vector<std::int64_t> flat;
     read_ints(b, "int", &flat, "cell list entry");
     offsets->assign(1, 0);
@@ -303,21 +324,27 @@ class VtkReader {
     mesh_->cell_types.reserve(ncells);
     for (std::size_t c = 0; c < ncells; ++c) {
       CellType type;
-      if (!cell_type_from_vtk(static_cast<int>(types[c]), &type))
-        s_.fail_at(types_pos_, "cell " + std::to_string(c) + ": unsupported VTK cell type " +
-                                   std::to_string(types[c]));
+      // The range check comes first: a cast of 2^32 + 9 to int would make it a quad.
+      if (types[c] < 0 || types[c] > 255 || !cell_type_from_vtk(static_cast<int>(types[c]), &type))
+        fail_value(types_at_, static_cast<std::int64_t>(c), types_pos_,
+                   "cell " + std::to_string(c) + ": unsupported VTK cell type " +
+                       std::to_string(types[c]));
       const std::int64_t b = offsets[c], e = offsets[c + 1];
+      // Where cell c's node count is: OFFSETS[c + 1] (5.1), its count entry in a legacy list.
+      const bool flat = flat_.start != kNoPos;
       if (e - b != cell_num_nodes(type) || b < 0 || e > static_cast<std::int64_t>(conn.size()))
-        s_.fail_at(cells_pos_, "cell " + std::to_string(c) + " (" + cell_name(type) + ") has " +
-                                   std::to_string(e - b) + " nodes, expected " +
-                                   std::to_string(cell_num_nodes(type)));
+        fail_value(
+            flat ? flat_ : offsets_at_, flat ? b + static_cast<std::int64_t>(c) : e, cells_pos_,
+            "cell " + std::to_string(c) + " (" + cell_name(type) + ") has " +
+                std::to_string(e - b) + " nodes, expected " + std::to_string(cell_num_nodes(type)));
       const int* p = gmsh_index_of_vtk_node(type);
       for (int i = 0; i < cell_num_nodes(type); ++i) {
         const std::int64_t v = conn[static_cast<std::size_t>(b + i)];
         if (v < 0 || v >= nv)
-          s_.fail_at(cells_pos_, "cell " + std::to_string(c) + " refers to point " +
-                                     std::to_string(v) + ", out of range 0.." +
-                                     std::to_string(nv - 1));
+          fail_value(flat ? flat_ : conn_at_, b + i + (flat ? static_cast<std::int64_t>(c) + 1 : 0),
+                     cells_pos_,
+                     "cell " + std::to_string(c) + " refers to point " + std::to_string(v) +
+                         ", out of range 0.." + std::to_string(nv - 1));
         nodes[p[i]] = static_cast<std::int32_t>(v);
       }
       mesh_->add_cell(type, nodes);
@@ -403,7 +430,7 @@ class VtkReader {
       const std::int64_t tuples = s_.integer(0, kMaxInt32, "number of tuples");
       const std::string_view type = value_type();
       if (n >= 0 && tuples != n)
-        s_.fail_at(p, "field array '" + name + "' has " + std::to_string(tuples) +
+        s_.fail_at(p, "field array '" + printable(name) + "' has " + std::to_string(tuples) +
                           " tuples, expected " + std::to_string(n));
       add_array(name, static_cast<int>(comps), tuples, type, out);
       if (n < 0) out->pop_back();
@@ -435,7 +462,36 @@ class VtkReader {
   Mesh* mesh_;
   bool binary_ = false;
   std::size_t cells_pos_ = 0;  // where CELLS / CELL_TYPES start: cell errors point there
-  std::size_t types_pos_ = 0;
+  std::size_t types_pos_ = 0;  // (when the value's own place is unknown: POLYDATA sections)
+  // Where the values of an array start and, in binary files, each value's size: errors in cell
+  // c point at its value (fail_value), found again only when an error is raised.
+  static constexpr std::size_t kNoPos = static_cast<std::size_t>(-1);
+  struct ValuesAt {
+    std::size_t start = kNoPos;
+    int size = 0;  // bytes per value; 0 in ASCII
+  };
+  ValuesAt types_at_, offsets_at_, conn_at_, flat_;  // flat_: a legacy CELLS list
+
+  ValuesAt values_at(std::string_view type) {
+    ValuesAt a;
+    a.start = s_.pos();
+    a.size = binary_ ? type_size(type) : 0;
+    return a;
+  }
+
+  // Fails at value `index` of the array at `a` (at `fallback`, a section, when unknown).
+  [[noreturn]] void fail_value(const ValuesAt& a, std::int64_t index, std::size_t fallback,
+                               const std::string& what) {
+    if (a.start == kNoPos || index < 0) s_.fail_at(fallback, what);
+    if (a.size > 0) s_.fail_byte(a.start + static_cast<std::size_t>(index) * a.size, what);
+    Scanner sc(s_.path(), s_.data());
+    sc.set_pos(a.start);
+    std::string_view t;
+    for (std::int64_t i = 0; i < index && sc.try_token(&t); ++i) {
+    }
+    sc.skip_space();
+    s_.fail_at(sc.pos(), what);
+  }
 };
 
 class VtkWriter {
@@ -521,7 +577,7 @@ class VtkWriter {
 
   void write_array(const DataArray& a, int items) {
     if (a.components < 1 || a.values.size() != static_cast<std::size_t>(items) * a.components)
-      throw Error("cannot write: data array '" + a.name + "' has " +
+      throw Error("cannot write: data array '" + printable(a.name) + "' has " +
                   std::to_string(a.values.size()) + " values for " + std::to_string(items) +
                   " items");
     const std::string name = encode_name(a.name);
@@ -551,7 +607,18 @@ void read_vtk(const std::string& path, const std::string& data, Mesh* mesh) {
   VtkReader(path, data, mesh).read();
 }
 
+void check_vtk_writable(const Mesh& mesh) {
+  // "SCALARS  double 1" reads "double" as the name: an unnamed array has no legacy form.
+  for (const auto* arrays : {&mesh.point_data, &mesh.cell_data})
+    for (const DataArray& a : *arrays)
+      if (a.name.empty())
+        throw Error(std::string("cannot write an unnamed ") +
+                    (arrays == &mesh.point_data ? "point" : "cell") +
+                    "-data array to .vtk (legacy VTK arrays need a name; .vtu takes it)");
+}
+
 void write_vtk(const Mesh& mesh, const WriteOptions& options, std::string* out) {
+  check_vtk_writable(mesh);
   for (int c = 0; c < mesh.num_cells(); ++c)
     for (int k = 0; k < mesh.cell_size(c); ++k)
       if (mesh.cell(c)[k] < 0 || mesh.cell(c)[k] >= mesh.num_vertices())

@@ -130,7 +130,8 @@ class VtuReader {
     const std::string* comp = t.attr("compressor");
     if (comp && !comp->empty()) {
       if (*comp != "vtkZLibDataCompressor")
-        s_.fail_at(t.start, "unsupported compressor '" + *comp + "' (vtkZLibDataCompressor is)");
+        s_.fail_at(t.start,
+                   "unsupported compressor '" + printable(*comp) + "' (vtkZLibDataCompressor is)");
       zlib_ = true;
     }
     find_appended();
@@ -168,7 +169,7 @@ class VtuReader {
       t->name = d.substr(n0, p - n0);
       while (true) {
         while (p < d.size() && is_space(d[p])) ++p;
-        if (p >= d.size()) s_.fail_at(lt, "unterminated tag <" + std::string(t->name) + ">");
+        if (p >= d.size()) s_.fail_at(lt, "unterminated tag <" + printable(t->name) + ">");
         if (d[p] == '>') {
           ++p;
           break;
@@ -183,7 +184,7 @@ class VtuReader {
         const std::string_view key = d.substr(a0, p - a0);
         while (p < d.size() && is_space(d[p])) ++p;
         if (p >= d.size() || d[p] != '=')
-          s_.fail_at(p, "malformed attribute in <" + std::string(t->name) + ">");
+          s_.fail_at(p, "malformed attribute in <" + printable(t->name) + ">");
         ++p;
         while (p < d.size() && is_space(d[p])) ++p;
         if (p >= d.size() || (d[p] != '"' && d[p] != '\''))
@@ -223,14 +224,14 @@ class VtuReader {
     const std::string* v = t.attr(key);
     if (!v) {
       if (def >= lo) return def;
-      s_.fail_at(t.start, std::string("<") + std::string(t.name) + "> needs " + key);
+      s_.fail_at(t.start, "<" + printable(t.name) + "> needs " + key);
     }
     Scanner sc(s_.path(), *v);
     std::int64_t x = 0;
     try {
       x = sc.integer(lo, hi, key);
     } catch (const Error&) {
-      s_.fail_at(t.start, std::string("bad ") + key + " '" + *v + "'");
+      s_.fail_at(t.start, std::string("bad ") + key + " '" + printable(*v) + "'");
     }
     return x;
   }
@@ -257,7 +258,7 @@ class VtuReader {
         if (t.closing || t.empty) {
           section = kNone;
         } else {
-          if (!have_piece) s_.fail_at(t.start, "<" + std::string(t.name) + "> outside <Piece>");
+          if (!have_piece) s_.fail_at(t.start, "<" + printable(t.name) + "> outside <Piece>");
           section = t.name == "Points"      ? kPoints
                     : t.name == "Cells"     ? kCells
                     : t.name == "PointData" ? kPointData
@@ -329,8 +330,8 @@ class VtuReader {
     const std::string* type = t.attr("type");
     const int size = type ? scalar_size(*type) : 0;
     if (size == 0)
-      s_.fail_at(t.start, "DataArray '" + a.name + "': unsupported type '" +
-                              (type ? *type : std::string()) + "'");
+      s_.fail_at(t.start, "DataArray '" + printable(a.name) + "': unsupported type '" +
+                              (type ? printable(*type) : std::string()) + "'");
     const std::string* format = t.attr("format");
     const std::string f = format ? *format : "ascii";
     const std::int64_t expected = items >= 0 ? items * a.components : -1;
@@ -343,8 +344,8 @@ class VtuReader {
       if (expected >= 0) sc.check_count(static_cast<std::uint64_t>(expected), 2, "value");
       while (!sc.at_end()) {
         if (expected >= 0 && static_cast<std::int64_t>(a.values.size()) >= expected)
-          sc.fail("DataArray '" + a.name + "' has more than " + std::to_string(expected) +
-                  " values");
+          sc.fail("DataArray '" + printable(a.name) + "' has more than " +
+                  std::to_string(expected) + " values");
         a.values.push_back(sc.real("value", finite));
       }
       s_.set_pos(e + 12);
@@ -355,7 +356,7 @@ class VtuReader {
       std::size_t bad = 0;
       const std::size_t p0 = s_.pos();
       if (!base64_decode(s_.data().substr(p0, e - p0), &raw, &bad))
-        s_.fail_at(p0 + bad, "invalid base64 character in DataArray '" + a.name + "'");
+        s_.fail_at(p0 + bad, "invalid base64 character in DataArray '" + printable(a.name) + "'");
       decode_binary(raw, 0, p0, *type, size, finite, &a);
       s_.set_pos(e + 12);
     } else if (f == "appended") {
@@ -369,13 +370,15 @@ class VtuReader {
       decode_binary(s_.data(), p0, p0, *type, size, finite, &a);
       skip_array(t);
     } else {
-      s_.fail_at(t.start, "unknown DataArray format '" + f + "'");
+      s_.fail_at(t.start, "unknown DataArray format '" + printable(f) + "'");
     }
     if (expected >= 0 && static_cast<std::int64_t>(a.values.size()) != expected)
-      s_.fail_at(t.start, "DataArray '" + a.name + "' has " + std::to_string(a.values.size()) +
-                              " values, expected " + std::to_string(expected));
+      s_.fail_at(t.start, "DataArray '" + printable(a.name) + "' has " +
+                              std::to_string(a.values.size()) + " values, expected " +
+                              std::to_string(expected));
     if (a.values.size() % a.components != 0)
-      s_.fail_at(t.start, "DataArray '" + a.name + "' size is not a multiple of its components");
+      s_.fail_at(t.start,
+                 "DataArray '" + printable(a.name) + "' size is not a multiple of its components");
     return a;
   }
 
@@ -405,8 +408,9 @@ class VtuReader {
     if (!zlib_) {
       const std::uint64_t n = header_word(buf, &p, file_pos - p0);
       if (n > buf.size() - p)
-        s_.fail_byte(file_pos, "binary DataArray '" + a->name + "' declares " + std::to_string(n) +
-                                   " bytes, only " + std::to_string(buf.size() - p) + " present");
+        s_.fail_byte(file_pos, "binary DataArray '" + printable(a->name) + "' declares " +
+                                   std::to_string(n) + " bytes, only " +
+                                   std::to_string(buf.size() - p) + " present");
       bytes.assign(buf.data() + p, static_cast<std::size_t>(n));
     } else {
       const std::uint64_t nblocks = header_word(buf, &p, file_pos - p0);
@@ -434,12 +438,12 @@ class VtuReader {
                                   reinterpret_cast<const Bytef*>(buf.data() + p),
                                   static_cast<uLong>(csize[b]));
         if (rc != Z_OK || dest != usize)
-          s_.fail_byte(file_pos, "zlib data of DataArray '" + a->name + "' is corrupt");
+          s_.fail_byte(file_pos, "zlib data of DataArray '" + printable(a->name) + "' is corrupt");
         p += static_cast<std::size_t>(csize[b]);
       }
     }
     if (bytes.size() % size != 0)
-      s_.fail_byte(file_pos, "binary DataArray '" + a->name + "' byte count " +
+      s_.fail_byte(file_pos, "binary DataArray '" + printable(a->name) + "' byte count " +
                                  std::to_string(bytes.size()) + " is not a multiple of " +
                                  std::to_string(size));
     const std::size_t n = bytes.size() / size;
@@ -468,7 +472,7 @@ class VtuReader {
     if (finite)
       for (double v : a->values)
         if (!std::isfinite(v))
-          s_.fail_byte(file_pos, "DataArray '" + a->name + "' holds a non-finite value");
+          s_.fail_byte(file_pos, "DataArray '" + printable(a->name) + "' holds a non-finite value");
   }
 
   template <typename T>
@@ -494,7 +498,9 @@ class VtuReader {
     for (std::int64_t c = 0; c < nc; ++c) {
       CellType type;
       const double vt = types[static_cast<std::size_t>(c)];
-      if (!cell_type_from_vtk(static_cast<int>(vt), &type) || vt != std::floor(vt))
+      // The range check comes before the cast (a double outside int is undefined behaviour).
+      if (!(vt >= 0 && vt <= 255) || vt != std::floor(vt) ||
+          !cell_type_from_vtk(static_cast<int>(vt), &type))
         s_.fail_at(types_pos_,
                    "cell " + std::to_string(c) + ": unsupported VTK cell type " + num(vt));
       const double end = offsets[static_cast<std::size_t>(c)];
@@ -581,7 +587,7 @@ class VtuWriter {
  private:
   void data_array(const DataArray& a, int items) {
     if (a.components < 1 || a.values.size() != static_cast<std::size_t>(items) * a.components)
-      throw Error("cannot write: data array '" + a.name + "' has " +
+      throw Error("cannot write: data array '" + printable(a.name) + "' has " +
                   std::to_string(a.values.size()) + " values for " + std::to_string(items) +
                   " items");
     array("Float64", a.name, a.components, a.values);

@@ -254,6 +254,22 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
   const CellInfo& info = cell_info(type);
   const int d = info.dim;
   if (d < 2) return q;
+  // Extreme but valid scales: a cell 1e-310 across has squared edge lengths and det T below the
+  // smallest double (it read as inverted with edge length 0), one 1e300 across overflows them
+  // (inf edge lengths, infinite scaled Jacobians). Such a cell is measured scaled by a power of
+  // two, which is exact, to about unit size; the size measures are scaled back. Cells within
+  // 2^-100..2^100 are measured as they are, bit for bit.
+  double scaled[kMaxCellNodes * 3];
+  int exponent = 0;  // nodes = scaled * 2^exponent
+  {
+    double extent = 0;
+    for (int i = 0; i < 3 * info.num_nodes; ++i) extent = std::max(extent, std::abs(nodes[i]));
+    if (std::isfinite(extent) && extent > 0 && (extent < 0x1p-100 || extent > 0x1p100)) {
+      exponent = std::ilogb(extent);
+      for (int i = 0; i < 3 * info.num_nodes; ++i) scaled[i] = std::ldexp(nodes[i], -exponent);
+      nodes = scaled;
+    }
+  }
 
   double lmin2 = kInf, lmax2 = 0, sum_l2 = 0;
   for (int e = 0; e < info.num_edges; ++e) {
@@ -301,6 +317,10 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
   }
 
   q.inverted = !(q.min_det > 0);
+  if (exponent != 0) {  // back to the cell's size (0 or inf where a double cannot hold it)
+    q.min_edge_length = std::ldexp(q.min_edge_length, exponent);
+    q.max_edge_length = std::ldexp(q.max_edge_length, exponent);
+  }
   if (type == CellType::kTri3 || type == CellType::kTet4 || type == CellType::kQuad4) {
     // det J is constant (simplices) or affine in xi (the bilinear quad): the corners decide.
     q.certified = q.inverted ? 0 : 1;
@@ -320,6 +340,7 @@ CellQuality cell_quality(CellType type, const double* nodes, const double* up,
     const int n = jacobian_bezier_coefficients(type, p, coefficients);
     q.certified = std::all_of(coefficients, coefficients + n, [](double c) { return c > 0; });
   }
+  if (exponent != 0) q.min_det = std::ldexp(q.min_det, d * exponent);
   return q;
 }
 

@@ -7,6 +7,23 @@
 #include "tmop/quality/parallel_for.h"
 
 namespace tmop {
+namespace {
+
+// |y - x|, also where the squared length under- or overflows (edges 1e-310 or 1e300 long):
+// then the difference is scaled by its largest component first.
+double edge_length(const double* x, const double* y, int sd) {
+  double l2 = 0;
+  for (int i = 0; i < sd; ++i) l2 += (y[i] - x[i]) * (y[i] - x[i]);
+  if (l2 >= 0x1p-900 && l2 <= 0x1p900) return std::sqrt(l2);
+  double m = 0;
+  for (int i = 0; i < sd; ++i) m = std::max(m, std::abs(y[i] - x[i]));
+  if (!(m > 0) || !std::isfinite(m)) return m;
+  double s = 0;
+  for (int i = 0; i < sd; ++i) s += ((y[i] - x[i]) / m) * ((y[i] - x[i]) / m);
+  return m * std::sqrt(s);
+}
+
+}  // namespace
 
 EdgeLengthStats edge_length_stats(const Mesh& mesh, int threads) {
   const int d = mesh.dim();
@@ -54,9 +71,7 @@ EdgeLengthStats edge_length_stats(const Mesh& mesh, int threads) {
                       const double* x = mesh.vertex(static_cast<int>(a));
                       for (const std::int32_t* b = first; b != last; ++b) {
                         const double* y = mesh.vertex(*b);
-                        double l2 = 0;
-                        for (int i = 0; i < sd; ++i) l2 += (y[i] - x[i]) * (y[i] - x[i]);
-                        const double l = std::sqrt(l2);
+                        const double l = edge_length(x, y, sd);
                         lo = std::min(lo, l);
                         hi = std::max(hi, l);
                         sum += l;

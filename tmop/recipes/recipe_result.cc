@@ -50,6 +50,7 @@ std::string record_json(const IterationRecord& r, bool with_iteration) {
          ", \"objective\": " + json_number(r.objective) +
          ", \"solver_objective\": " + json_number(r.solver_objective) + ", ";
   s += "\"min_quality\": " + json_number(r.min_quality) +
+       (with_iteration ? "" : ", \"min_quality_measure\": \"sample_mean_ratio\"") +
        ", \"inverted\": " + (r.inverted < 0 ? std::string("null") : std::to_string(r.inverted));
   if (with_iteration) s += ", \"seconds\": " + json_number(r.seconds);
   return s + "}";

@@ -29,7 +29,10 @@ struct RecipeResult {
 };
 
 // JSON object (no trailing newline) with stable keys, numbers printed with %.17g:
-// {"recipe", "seconds", "before": {"min_quality", "inverted"}, "after": {...},
+// {"recipe", "seconds", "before": {"min_quality", "min_quality_measure", "inverted"},
+//  "after": {...},  (min_quality_measure is "sample_mean_ratio": min_quality is the worst mean
+//  ratio d det(T)^(2/d) / |T|^2 of T = A W^-1, W the ideal element, over the sample points of
+//  the rule, negative where det T < 0; tmop_quality's mean_ratio for linear simplices)
 //  "certified", "uncertified" (null when not attempted),
 //  "layer_cells", "held_vertices" (recipes sliver, shape: boundary layer; null otherwise),
 //  "guard_held_cells" (the guarantee guard: cells held in its last round; null without guard),
