@@ -7,6 +7,7 @@
 //                  --target_shape=ideal|initial --target_skew=SRC --target_aspect=SRC]
 //                 [--solver=lm|dogleg] [--linear_solver=auto|cholesky|cgnr]
 //                 [--max_iterations=N] [--threads=N] [--report=FILE.json] [--verbose]
+//                 [--orientation=auto|gmsh|opposite]
 //
 // Exit status: 0 success; 1 the optimization could not reach its goal; 2 bad input or usage.
 // Errors are one line on stderr. OUT is written atomically and only on success; IN is never
@@ -120,6 +121,12 @@ DEFINE_string(geometry, "",
               "Geometry to slide on: sphere:cx,cy,cz,r / plane:px,py,pz,nx,ny,nz / "
               "cylinder:px,py,pz,dx,dy,dz,r / a surface file (.stl .obj .off .ply). Default: "
               "the input's own boundary.");
+DEFINE_string(orientation, "auto",
+              "Orientation convention of the input: auto (decided by the boundary: the signed "
+              "volume (2D: area) its facets enclose as their cells orient them, which no tangle "
+              "inside it can change; by a majority of the cells only when it encloses nothing), "
+              "gmsh (det J > 0 is valid: Gmsh's and tmop's convention) or opposite (det J < 0 is "
+              "valid: the cells are reoriented for the run and written back as they were).");
 DEFINE_double(feature_angle, 30, "Boundary edges sharper than this (degrees) are features.");
 DEFINE_string(moved, "",
               "Recipe preserve: the mesh with its boundary moved (same vertices and cells as "
@@ -157,11 +164,19 @@ bool same_file(const std::string& a, const std::string& b) {
          sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
+// The mesh in hand is in tmop's convention (--orientation decided): measure it as it is.
+tmop::QualityOptions as_decided() {
+  tmop::QualityOptions o;
+  o.detect_convention = false;
+  return o;
+}
+
 // One line of the quality report (tmop_quality gives the whole report); returns the report.
 // keep_per_cell: keep the per-cell arrays (to refresh the mesh's quality fields with them).
+
 tmop::QualityReport print_quality(const char* label, const tmop::Mesh& mesh,
                                   bool keep_per_cell = false) {
-  tmop::QualityReport q = tmop::compute_quality(mesh);
+  tmop::QualityReport q = tmop::compute_quality(mesh, as_decided());
   std::printf("%-7s %lld elements, %lld inverted", label, static_cast<long long>(q.num_elements),
               static_cast<long long>(q.inverted_cells));
   if (q.mean_ratio.count > 0)
@@ -261,6 +276,8 @@ int main(int argc, char** argv) {
     return fail(2, "--feature_angle must be in (0, 180) degrees");
   if (FLAGS_guarantee != "all" && FLAGS_guarantee != "worst" && FLAGS_guarantee != "off")
     return fail(2, "--guarantee must be all, worst or off, not '" + FLAGS_guarantee + "'");
+  if (FLAGS_orientation != "auto" && FLAGS_orientation != "gmsh" && FLAGS_orientation != "opposite")
+    return fail(2, "--orientation must be auto, gmsh or opposite, not '" + FLAGS_orientation + "'");
   if (FLAGS_boundary != "fixed" && FLAGS_boundary != "slide")
     return fail(2, "--boundary must be fixed or slide, not '" + FLAGS_boundary + "'");
   // Recipes surface and sliver slide by default (their definitions); the others keep the
@@ -388,15 +405,19 @@ int main(int argc, char** argv) {
   }
 
   // A mesh written with the opposite orientation convention is not "all inverted": optimize it
-  // in tmop's convention and write it back in its own.
+  // in tmop's convention and write it back in its own. The boundary decides (orientation.h), so
+  // a tangle of more than half the cells is still a tangle; --orientation states it instead.
   const OrientationReport orientation = check_orientation(mesh);
-  const bool flipped = orientation.opposite_convention();
+  const bool flipped = FLAGS_orientation == "auto" ? orientation.opposite_convention()
+                                                   : FLAGS_orientation == "opposite";
+  if (FLAGS_orientation == "auto" &&
+      (flipped || 2 * orientation.negative > orientation.num_elements()))
+    std::printf("note: %s: %s%s\n", FLAGS_input.c_str(), describe_orientation(orientation).c_str(),
+                flipped ? ": handled" : ": the negative cells are inverted");
+  else if (flipped)
+    std::printf("note: %s: opposite convention (--orientation=opposite; %d of %d cells negative)\n",
+                FLAGS_input.c_str(), orientation.negative, orientation.num_elements());
   if (flipped) {
-    std::printf(
-        "note: %s uses the opposite orientation convention (%d of %d cells negative); "
-        "handled\n",
-        FLAGS_input.c_str(), orientation.negative,
-        orientation.positive + orientation.negative + orientation.mixed_or_zero);
     reorient(&mesh);
     if (opt.target.reference) reorient(&reference);
   }
@@ -530,7 +551,7 @@ int main(int argc, char** argv) {
     written_note = FLAGS_write_on_failure ? "result written" : "nothing written";
   } else if (!recipe_status.ok()) {
     // Inverted counts as the quality report counts them (quadratic cells by their certificate).
-    const std::int64_t now = compute_quality(mesh).inverted_cells;
+    const std::int64_t now = compute_quality(mesh, as_decided()).inverted_cells;
     const std::int64_t was = quality_before.inverted_cells;
     if (!FLAGS_write_on_failure) {
       written_note = "nothing written: the result has " + std::to_string(now) +
@@ -576,7 +597,15 @@ int main(int argc, char** argv) {
         FLAGS_report, run_report(result, quality_before, quality_after, write, status) + "\n");
     if (!s.ok()) return fail(2, s.message());
   }
-  if (!recipe_status.ok())
-    return fail(1, FLAGS_input + ": " + recipe_status.message() + " (" + written_note + ")");
+  if (!recipe_status.ok()) {
+    // A convention stated against the boundary's evidence is the likelier culprit.
+    std::string hint;
+    if (orientation.evidence() == OrientationReport::Evidence::kBoundary &&
+        flipped != orientation.opposite_convention())
+      hint = "; the boundary says " +
+             std::string(orientation.opposite_convention() ? "the opposite" : "Gmsh's") +
+             " convention: try --orientation=auto";
+    return fail(1, FLAGS_input + ": " + recipe_status.message() + " (" + written_note + ")" + hint);
+  }
   return 0;
 }

@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <random>
+#include <string>
 #include <utility>
 
 #include "tests/mesh/test_meshes.h"
@@ -131,6 +134,87 @@ TEST(Orientation, ReorientLeavesBoundaryCellsAlone) {
   EXPECT_EQ(m.cell(4)[0], 0);
   EXPECT_EQ(m.cell(4)[1], 1);
   EXPECT_EQ(check_orientation(m).negative, 4);
+}
+
+// A box of Kuhn tets whose interior vertices within `slab` layers of the mid-plane are mirrored
+// through it (the boundary stays): the mirrored block's tets are inverted, the boundary is not.
+Mesh MirroredBlock(int n, int slab) {
+  Mesh m = KuhnTets(n, n, 2 * n);
+  for (int v = 0; v < m.num_vertices(); ++v) {
+    double* x = m.vertex(v);
+    const bool interior = x[0] > 0 && x[0] < n && x[1] > 0 && x[1] < n && x[2] > 0 && x[2] < 2 * n;
+    if (interior && std::abs(x[2] - n) <= slab) x[2] = 2.0 * n - x[2];
+  }
+  return m;
+}
+
+// The boundary decides the convention, so a tangle of most cells is read as a tangle, not as a
+// file in the opposite convention; the mirror image of the whole file is read as opposite.
+TEST(Orientation, MirroredInteriorBlockIsATangleNotTheOppositeConvention) {
+  const int n = 6;
+  const Mesh m = MirroredBlock(n, n - 1);
+  const OrientationReport r = check_orientation(m);
+  ASSERT_GT(2 * r.negative, r.num_elements());  // a majority vote would say "opposite"
+  EXPECT_EQ(r.evidence(), OrientationReport::Evidence::kBoundary);
+  EXPECT_FALSE(r.opposite_convention());
+  EXPECT_NEAR(r.boundary_measure, 2.0 * n * n * n, 1e-9 * n * n * n);  // the box's volume
+  EXPECT_NE(describe_orientation(r).find("Gmsh's convention: the boundary"), std::string::npos)
+      << describe_orientation(r);
+  std::printf("mirrored block: %d of %d tets negative, boundary encloses %.6g\n", r.negative,
+              r.num_elements(), r.boundary_measure);
+  Mesh flipped = m;
+  reorient(&flipped);
+  const OrientationReport f = check_orientation(flipped);
+  EXPECT_TRUE(f.opposite_convention());
+  EXPECT_LT(2 * f.negative, f.num_elements());  // a majority vote would say "Gmsh's"
+  EXPECT_NEAR(f.boundary_measure, -2.0 * n * n * n, 1e-9 * n * n * n);
+  EXPECT_NE(describe_orientation(f).find("opposite convention"), std::string::npos);
+}
+
+// 2D: the signed area enclosed by the boundary edges; far from the origin too.
+TEST(Orientation, TwoDimensionalBoundaryAreaDecides) {
+  const int n = 8;
+  Mesh m;
+  m.space_dim = 2;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x[2] = {1e6 + i, -3e5 + j};
+      m.add_vertex(x);
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::int32_t q[4] = {j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1,
+                                 (j + 1) * (n + 1) + i};
+      m.add_cell(CellType::kQuad4, q);
+    }
+  for (int j = 1; j < n; ++j)  // mirror the interior columns 1..n-1 through the middle
+    for (int i = 1; i < n; ++i)
+      m.vertex(j * (n + 1) + i)[0] = 2e6 + n - m.vertex(j * (n + 1) + i)[0];
+  const OrientationReport r = check_orientation(m);
+  ASSERT_GT(2 * (r.negative + r.mixed_or_zero), r.num_elements());
+  EXPECT_EQ(r.evidence(), OrientationReport::Evidence::kBoundary);
+  EXPECT_FALSE(r.opposite_convention());
+  EXPECT_NEAR(r.boundary_measure, n * n, 1e-6);
+  reorient(&m);
+  EXPECT_TRUE(check_orientation(m).opposite_convention());
+}
+
+// A boundary that encloses nothing (two equal tets, one written the other way round) is no
+// evidence: the cells decide by majority.
+TEST(Orientation, WithoutBoundaryEvidenceTheCellsDecide) {
+  Mesh m = KuhnTets(1, 1, 1);
+  Mesh two;
+  two.space_dim = 3;
+  for (int v = 0; v < m.num_vertices(); ++v) two.add_vertex(m.vertex(v));
+  for (int c : {0, 1}) {
+    std::int32_t t[4];
+    for (int i = 0; i < 4; ++i) t[i] = m.cell(c)[i];
+    if (c == 1) std::swap(t[1], t[2]);
+    two.add_cell(CellType::kTet4, t);
+  }
+  const OrientationReport r = check_orientation(two);
+  EXPECT_EQ(r.evidence(), OrientationReport::Evidence::kCells);
+  EXPECT_FALSE(r.opposite_convention());  // 1 of 2 negative: no majority
 }
 
 }  // namespace

@@ -1,9 +1,14 @@
 #include "tmop/mesh/orientation.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
 #include <vector>
 
 #include "tmop/element/shape.h"
+#include "tmop/mesh/topology.h"
 
 namespace tmop {
 namespace {
@@ -136,6 +141,24 @@ const int* reorient_permutation(CellType type) {
   return GetPermutations().perm[static_cast<int>(type)].data();
 }
 
+OrientationReport::Evidence OrientationReport::evidence() const {
+  if (num_elements() == 0) return Evidence::kNone;
+  if (boundary_scale > 0 && std::abs(boundary_measure) >= 1e-6 * boundary_scale)
+    return Evidence::kBoundary;
+  return Evidence::kCells;
+}
+
+bool OrientationReport::opposite_convention() const {
+  switch (evidence()) {
+    case Evidence::kBoundary:
+      return boundary_measure < 0;
+    case Evidence::kCells:
+      return 2 * negative > num_elements();
+    default:
+      return false;
+  }
+}
+
 OrientationReport check_orientation(const Mesh& mesh) {
   OrientationReport r;
   const int d = mesh.dim();
@@ -153,7 +176,80 @@ OrientationReport check_orientation(const Mesh& mesh) {
         ++r.mixed_or_zero;
     }
   }
+  if (r.num_elements() == 0) return r;
+  r.dim = d;
+  // Contributions are taken about the centre of the bounding box, so that coordinates far from
+  // the origin do not cancel digits away.
+  double lo[3], hi[3], o[3] = {0, 0, 0};
+  for (int a = 0; a < d; ++a) {
+    lo[a] = std::numeric_limits<double>::infinity();
+    hi[a] = -lo[a];
+  }
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    for (int a = 0; a < d; ++a) {
+      lo[a] = std::min(lo[a], mesh.vertex(v)[a]);
+      hi[a] = std::max(hi[a], mesh.vertex(v)[a]);
+    }
+  for (int a = 0; a < d; ++a) o[a] = (lo[a] + hi[a]) / 2;
+  auto rel = [&](int v, double* x) {
+    for (int a = 0; a < d; ++a) x[a] = mesh.vertex(v)[a] - o[a];
+  };
+  double sum = 0, scale = 0;
+  for (const BoundaryFacet& f : boundary_facets(mesh)) {
+    if (d == 2) {
+      if (f.num_corners != 2) continue;
+      double a[3], b[3];
+      rel(f.corners[0], a);
+      rel(f.corners[1], b);
+      const double area = (a[0] * b[1] - a[1] * b[0]) / 2;
+      sum += area;
+      scale += std::abs(area);
+      continue;
+    }
+    double x[4][3];
+    for (int k = 0; k < f.num_corners; ++k) rel(f.corners[k], x[k]);
+    if (f.num_corners == 3) {
+      const double v = Det3(x[0], x[1], x[2]) / 6;
+      sum += v;
+      scale += std::abs(v);
+    } else if (f.num_corners == 4) {
+      double m[3];
+      for (int a = 0; a < 3; ++a) m[a] = (x[0][a] + x[1][a] + x[2][a] + x[3][a]) / 4;
+      for (int k = 0; k < 4; ++k) {
+        const double v = Det3(m, x[k], x[(k + 1) % 4]) / 6;
+        sum += v;
+        scale += std::abs(v);
+      }
+    }
+  }
+  r.boundary_measure = sum;
+  r.boundary_scale = scale;
   return r;
+}
+
+std::string describe_orientation(const OrientationReport& r) {
+  char counts[96];
+  std::snprintf(counts, sizeof counts, "%d of %d cells negative", r.negative, r.num_elements());
+  char text[320];
+  switch (r.evidence()) {
+    case OrientationReport::Evidence::kBoundary:
+      std::snprintf(text, sizeof text,
+                    "%s convention: the boundary, as its cells orient it, encloses a signed "
+                    "%s of %.6g (%s; interior tangles do not change the boundary's sign)",
+                    r.boundary_measure < 0 ? "opposite" : "Gmsh's", r.dim == 2 ? "area" : "volume",
+                    r.boundary_measure, counts);
+      break;
+    case OrientationReport::Evidence::kCells:
+      std::snprintf(text, sizeof text,
+                    "%s convention: the boundary encloses no %s as its cells orient it, so "
+                    "the cells decide by majority (%s)",
+                    r.opposite_convention() ? "opposite" : "Gmsh's", r.dim == 2 ? "area" : "volume",
+                    counts);
+      break;
+    default:
+      std::snprintf(text, sizeof text, "no orientation sign (not a planar 2D or a volume mesh)");
+  }
+  return text;
 }
 
 void reorient(Mesh* mesh) {

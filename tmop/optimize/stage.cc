@@ -444,8 +444,14 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), G[0].at(p), T, frames.cell(c));
       if (!(det_d(T, d) > 0)) stuck.push_back(c);
     }
+    // Only the default fixed boundary can be released: sliding keeps corners and feature
+    // curves, and a caller's own flags are its choice.
     if (!stuck.empty())
-      return fail("cannot untangle: inverted cells with every node fixed: " + list_cells(stuck));
+      return fail("cannot untangle: " + std::to_string(stuck.size()) + " cells inverted with " +
+                  (spec.fixed.empty() && !spec.boundary
+                       ? "every node on the fixed boundary (try --boundary=slide): "
+                       : "every node fixed: ") +
+                  list_cells(stuck));
   }
 
   // The Ceres problem: one residual block per sample point with a free node.
@@ -659,6 +665,9 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
     return summary.termination_type != ceres::FAILURE;
   };
   int untangle_rounds = 0;
+  // Untangling that ends worse than an earlier round (or its start) returns that round's state:
+  // the round (0 = the start) and the last round's inverted count.
+  int kept_round = -1, last_round_inverted = 0;
   // Surface meshes solve in rounds: the tangent frames are held fixed during a solve and
   // refreshed at the new positions after it. A barrier round is kept only if no cell is folded
   // in the refreshed frames, i.e. against the surface where the cell now lies: a long solve can
@@ -704,26 +713,46 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
       const double theta = untangle_metric->theta();
       double eps = untangle_metric->eps();
       so.max_num_iterations = spec.untangle_round_iterations;
-      const int max_rounds = min_target_det(*mesh, point_cell, G[0], nullptr, frames) > 0
-                                 ? 0
-                                 : spec.untangle_max_rounds;
+      // The best state reached: fewest inverted cells at the stage's points, then the largest
+      // min det. The schedule can end worse than it started (eps driven towards 0 around cells
+      // that cannot be repaired drags their neighbours over); the stage then returns that state.
+      std::vector<int> now_bad;
+      double det_now = min_target_det(*mesh, point_cell, G[0], &now_bad, frames);
+      std::size_t best_bad = now_bad.size();
+      double best_det = det_now;
+      int best_round = 0;
+      std::vector<double> best_coords = mesh->coords;
+      const int max_rounds = det_now > 0 ? 0 : spec.untangle_max_rounds;
+      int solved_rounds = 0;
       for (int round = 0; round < max_rounds; ++round) {
-        untangle_rounds = round + 1;
         metrics.push_back(std::make_unique<UntangleMetric>(d, eps, theta));
         for (SamplePointCost& cost : costs) cost.set_metric(0, metrics.back().get());
         so.max_num_iterations = spec.untangle_round_iterations;
         if (!budget()) break;
         if (!solve()) return fail("solver failed: " + summary.message);
         result->final_eps = eps;
-        const double det_min = min_target_det(*mesh, point_cell, G[0], nullptr, frames);
+        solved_rounds = untangle_rounds = round + 1;
+        const double det_min = min_target_det(*mesh, point_cell, G[0], &now_bad, frames);
+        det_now = det_min;
         if (det_min > 0) break;
+        if (now_bad.size() < best_bad || (now_bad.size() == best_bad && det_min > best_det)) {
+          best_bad = now_bad.size();
+          best_det = det_min;
+          best_round = round + 1;
+          best_coords = mesh->coords;
+        }
         const double energy = summary.final_cost;
         const double sigma = std::max(1 - energy / summary.initial_cost, spec.untangle_sigma_min);
         const double mu = (1 - sigma) * UntangleMetric::chi(det_min, eps);
         eps = det_min < mu ? 2 * std::sqrt(mu * (mu - det_min)) : 1e-12;
         if (std::getenv("TMOP_DEBUG_EPS"))
-          std::fprintf(stderr, "round %d E %g det_min %g mu %g eps %g\n", round, energy, det_min,
-                       mu, eps);
+          std::fprintf(stderr, "round %d E %g det_min %g mu %g eps %g inverted %zu\n", round,
+                       energy, det_min, mu, eps, now_bad.size());
+      }
+      if (!(det_now > 0) && best_round < solved_rounds) {
+        kept_round = best_round;
+        last_round_inverted = static_cast<int>(now_bad.size());
+        mesh->coords = best_coords;
       }
     } else {
       // One solve (a power mean too: its loss keeps the exact model, power_loss.h); surface
@@ -758,7 +787,15 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
             ? (untangle_rounds == 0 ? std::string("nothing inverted: no untangling needed")
                                     : "untangled in " + std::to_string(untangle_rounds) +
                                           " eps rounds (final eps " + eps_text + ")")
-            : "still inverted after " + std::to_string(untangle_rounds) + " eps rounds";
+            : "still inverted after " + std::to_string(untangle_rounds) + " eps rounds" +
+                  (kept_round < 0 ||
+                           last_round_inverted == static_cast<int>(result->inverted_cells.size()) ? std::string()
+                                  : "; the best state kept (" +
+                                        (kept_round == 0 ? std::string("the start")
+                                                         : "round " + std::to_string(kept_round)) +
+                                        ": " + std::to_string(result->inverted_cells.size()) +
+                                        " cells inverted at sample points, the last round " +
+                                        std::to_string(last_round_inverted) + ")");
   }
   from_frame(frame, mesh);
   // Mapping back is not bit-exact; vertices that were never free keep their input coordinates.

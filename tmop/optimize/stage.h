@@ -86,7 +86,9 @@ struct StageSpec {
   // UntangleMetric (metric/untangle.h); the stage solves repeatedly, lowering its eps between
   // solves from the current minimum of det T (Garanzha et al. 2021), until no sample point is
   // inverted or untangle_max_rounds solves were made. Each solve is capped at
-  // untangle_round_iterations Ceres iterations.
+  // untangle_round_iterations Ceres iterations. A schedule that ends with inverted points
+  // returns the best state it reached (fewest inverted cells, then the largest min det; its
+  // start included), not its last.
   bool untangle = false;
   int untangle_max_rounds = 60;
   int untangle_round_iterations = 40;

@@ -35,9 +35,9 @@ struct QualityOptions {
   // them NaN; count_inverted and worst_quality turn them off.
   bool angles = true;
 
-  // Meshes written in the opposite orientation convention (most elements negative: some
-  // generators and formats, mesh/orientation.h) are measured in their own convention, so that
-  // they are not reported as all inverted; QualityReport::opposite_convention says so. Off:
+  // Meshes written in the opposite orientation convention (some generators and formats; decided
+  // by the boundary's orientation, mesh/orientation.h) are measured in their own convention, so
+  // that they are not reported as all inverted; QualityReport::opposite_convention says so. Off:
   // measure every cell as stored.
   bool detect_convention = true;
 

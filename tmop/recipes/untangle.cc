@@ -1,11 +1,16 @@
 #include "tmop/recipes/untangle.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 
 #include "tmop/element/bezier.h"
 #include "tmop/element/sample_points.h"
+#include "tmop/mesh/topology.h"
 #include "tmop/metric/untangle.h"
 #include "tmop/quality/cell_quality.h"
+#include "tmop/quality/count_inverted.h"
+#include "tmop/quality/element_scan.h"
 #include "tmop/quality/jacobian_certificate.h"
 #include "tmop/quality/quality_options.h"
 
@@ -18,6 +23,58 @@ std::string cell_list(const std::vector<int>& cells) {
     s += (i ? ", " : "") + std::to_string(cells[i]);
   if (cells.size() > 10) s += ", ... (" + std::to_string(cells.size()) + " in all)";
   return s;
+}
+
+// The cells tmop_quality (compute_quality, count_inverted) counts as inverted: det J <= 0 at a
+// corner or default sample point, and tri6 / tet10 whose Bernstein bound cannot prove det J > 0.
+std::vector<int> quality_inverted_cells(const Mesh& mesh) {
+  QualityOptions options;
+  options.angles = false;
+  options.threads = 1;  // the callback appends in cell order
+  std::vector<int> cells;
+  scan_elements(mesh, options, [&](std::int64_t, std::int64_t c, const CellQuality& q) {
+    if (q.inverted) cells.push_back(static_cast<int>(c));
+  });
+  return cells;
+}
+
+// The failure line of an untangling that ends with inverted cells, counted as tmop_quality
+// counts them (so that it agrees with the tool's counts), with what would help. at_points: the
+// cells the stage left inverted at its sample points (null: the input was returned instead).
+// fixed: the vertices that could not move (empty: none reported); boundary_fixed: they are the
+// default fixed boundary, which sliding would release.
+std::string still_inverted_message(const Mesh& mesh, const StageResult& stage,
+                                   const std::vector<int>* at_points,
+                                   const std::vector<char>& fixed, bool boundary_fixed) {
+  std::vector<int> all = quality_inverted_cells(mesh);
+  const std::size_t by_quality = all.size();
+  if (at_points)
+    for (int c : *at_points)
+      if (!std::binary_search(all.begin(), all.begin() + by_quality, c)) all.push_back(c);
+  std::sort(all.begin(), all.end());
+  const int n = static_cast<int>(all.size());
+  std::string text = "could not untangle in " + std::to_string(stage.solves) + " eps rounds (" +
+                     std::to_string(stage.iterations) + " iterations): " + std::to_string(n) +
+                     (n == 1 ? " cell" : " cells") + " still inverted";
+  if (at_points && static_cast<int>(at_points->size()) != n)
+    text += " (" + std::to_string(at_points->size()) + " with det J <= 0 at a sample point, " +
+            std::to_string(n - static_cast<int>(at_points->size())) +
+            " more by the Bernstein certificate of det J)";
+  text += ": " + cell_list(all);
+  if (!at_points) text += "; the input is returned (the untangling ended with more)";
+  int at_fixed = 0;
+  if (!fixed.empty())
+    for (int c : all) {
+      bool touches = false;
+      for (int i = 0; i < mesh.cell_size(c) && !touches; ++i) touches = fixed[mesh.cell(c)[i]];
+      at_fixed += touches;
+    }
+  if (at_fixed > 0) {
+    text +=
+        "; " + std::to_string(at_fixed) + " of them " + (at_fixed == 1 ? "has" : "have") +
+        (boundary_fixed ? " nodes on the fixed boundary: try --boundary=slide" : " fixed nodes");
+  }
+  return text;
 }
 
 bool has_certificate(CellType t) { return t == CellType::kTri6 || t == CellType::kTet10; }
@@ -78,6 +135,8 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
   if (!(options.sigma_min > 0 && options.sigma_min < 1))
     return Status::Failure("untangle options: sigma_min must lie in (0, 1)");
   result->before = measure_mesh(*mesh, options.rule);
+  const std::vector<double> input_coords = mesh->coords;
+  const std::int64_t inverted_at_start = count_inverted(*mesh, options.solver.threads);
   auto finish = [&]() {
     result->after = measure_mesh(*mesh, options.rule);
     result->seconds =
@@ -120,10 +179,15 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
     if (!s.ok()) return s;
     if (sr.solves > 0) result->stages.push_back(sr);
     if (!sr.inverted_cells.empty()) {
+      // Never more inverted cells than the input had, as tmop_quality counts them (the stage
+      // keeps its best round by its own sample points, which can differ for quadratic cells).
+      const bool restore = count_inverted(*mesh, options.solver.threads) > inverted_at_start;
+      if (restore) mesh->coords = input_coords;
       finish();
-      return Status::Failure("could not untangle within " + std::to_string(options.max_rounds) +
-                             " rounds: " + std::to_string(sr.inverted_cells.size()) +
-                             " cells still inverted: " + cell_list(sr.inverted_cells));
+      const bool boundary_fixed = options.fixed.empty() && !geometry;
+      return Status::Failure(still_inverted_message(
+          *mesh, sr, restore ? nullptr : &sr.inverted_cells,
+          boundary_fixed ? boundary_vertex_mask(*mesh) : options.fixed, boundary_fixed));
     }
     if (options.improve_shape_after) {
       ShapeOptions shape = options.shape;

@@ -9,9 +9,11 @@
 //
 // Result: Ok when the mesh is untangled (and improved). Failure when an inverted element has
 // every node fixed (nothing can repair it: the message names the cells; the mesh is unchanged)
-// or when inverted elements remain after the rounds allowed (the message names them; the mesh
-// then holds the best state reached, so a caller may still write it on request), or when a
-// quadratic cell is proven inverted by its certificate after the certification rounds.
+// or when inverted elements remain after the rounds allowed (the message names them, counted as
+// tmop_quality counts them, and says when they have nodes on the fixed boundary; the mesh then
+// holds the best state reached - never more inverted cells than the input - so a caller may
+// still write it on request), or when a quadratic cell is proven inverted by its certificate
+// after the certification rounds.
 #ifndef TMOP_RECIPES_UNTANGLE_H_
 #define TMOP_RECIPES_UNTANGLE_H_
 
