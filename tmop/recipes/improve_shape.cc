@@ -8,6 +8,7 @@
 #include "tmop/metric/power_mean.h"
 #include "tmop/quality/parallel_for.h"
 #include "tmop/quality/worst_quality.h"
+#include "tmop/recipes/quadratic_shape.h"
 
 namespace tmop {
 
@@ -31,6 +32,8 @@ std::shared_ptr<const Metric> recipe_metric(const std::string& name, int dim, do
 }
 
 Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* result) {
+  // Quadratic cells: through their corner mesh (quadratic_shape.h); it calls back with that.
+  if (use_quadratic_shape(*mesh)) return improve_quadratic_shape(mesh, options, result);
   const auto start = std::chrono::steady_clock::now();
   *result = RecipeResult();
   result->recipe = "shape";
