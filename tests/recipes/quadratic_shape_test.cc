@@ -19,6 +19,7 @@
 
 #include "recipe_test_meshes.h"
 #include "tmop/element/cell_type.h"
+#include "tmop/element/shape.h"
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/quality_report.h"
@@ -62,6 +63,14 @@ const char kBox[] =
     "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
     "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
     "Extrude {0, 0, 1} { Surface{1}; }\n";
+
+// A structured hex27 box (3 x 3 x 3 cells).
+const char kHexBox[] =
+    "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};\n"
+    "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+    "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+    "Transfinite Curve{1, 2, 3, 4} = 5; Transfinite Surface{1}; Recombine Surface{1};\n"
+    "Extrude {0, 0, 1} { Surface{1}; Layers{4}; Recombine; }\n";
 
 // A disk: curved boundary, boundary mid nodes on the circle.
 const char kDisk[] =
@@ -145,11 +154,13 @@ void expect_never_worse(const Mesh& in, const Mesh& out, const std::string& labe
     EXPECT_LE(a.max_dihedral, b.max_dihedral + 1e-6) << label;
     EXPECT_LE(a.slivers, b.slivers) << label;
     EXPECT_EQ(a.invalid, 0) << label << " " << cell_name(t) << " cells not certified valid";
+    const double bw1 = b.worst[1] > 1e299 ? NAN : b.worst[1];  // quad9 / hex27: not defined
+    const double aw1 = a.worst[1] > 1e299 ? NAN : a.worst[1];
     std::printf(
-        "%s %s: corner worst %.4f -> %.4f mean %.4f -> %.4f; pointwise worst %.4f -> %.4f; "
-        "det J ratio worst %.4f -> %.4f mean %.4f -> %.4f\n",
-        label.c_str(), cell_name(t), b.worst[0], a.worst[0], b.mean[0], a.mean[0], b.worst[1],
-        a.worst[1], b.worst[2], a.worst[2], b.mean[2], a.mean[2]);
+        "%s: corner worst %.4f -> %.4f mean %.4f -> %.4f; pointwise mean ratio worst %.4f "
+        "-> %.4f; det J ratio worst %.4f -> %.4f mean %.4f -> %.4f\n",
+        label.c_str(), b.worst[0], a.worst[0], b.mean[0], a.mean[0], bw1, aw1, b.worst[2],
+        a.worst[2], b.mean[2], a.mean[2]);
   }
   const QualityReport q = compute_quality(out);
   EXPECT_EQ(q.inverted_cells, 0) << label;
@@ -184,6 +195,37 @@ RecipeResult run_auto(Mesh* mesh) {
   const Status s = untangle(mesh, opt, &result);
   EXPECT_TRUE(s.ok()) << s.message();
   return result;
+}
+
+// Moves the interior corners by up to `amount` of the mesh size and puts every other node at the
+// corners' linear interpolation: a valid straight-sided mesh that can be improved.
+void perturb_straight(Mesh* mesh, double amount, unsigned seed) {
+  const std::vector<char> boundary = boundary_vertex_mask(*mesh);
+  std::vector<char> corner(mesh->num_vertices(), 0);
+  const int d = mesh->dim();
+  for (int c = 0; c < mesh->num_cells(); ++c)
+    if (mesh->is_element(c, d))
+      for (int i = 0; i < cell_info(mesh->cell_type(c)).num_corners; ++i)
+        corner[mesh->cell(c)[i]] = 1;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amount, amount);
+  for (int v = 0; v < mesh->num_vertices(); ++v)
+    if (corner[v] && !boundary[v])
+      for (int a = 0; a < mesh->space_dim; ++a) mesh->vertex(v)[a] += u(rng);
+  double N[kMaxCellNodes];
+  for (int c = 0; c < mesh->num_cells(); ++c) {
+    if (!mesh->is_element(c, d)) continue;
+    const CellType t = mesh->cell_type(c);
+    const CellInfo& info = cell_info(t);
+    for (int k = info.num_corners; k < info.num_nodes; ++k) {
+      shape_values(info.linear, reference_node(t, k), N);
+      for (int a = 0; a < mesh->space_dim; ++a) {
+        double x = 0;
+        for (int i = 0; i < info.num_corners; ++i) x += N[i] * mesh->vertex(mesh->cell(c)[i])[a];
+        mesh->vertex(mesh->cell(c)[k])[a] = x;
+      }
+    }
+  }
 }
 
 TEST(QuadraticShape, CornerMeshHasTheLinearCellsOnTheSameVertices) {
@@ -230,6 +272,26 @@ TEST(QuadraticShape, BoxTet10StaysStraightAndNeverWorse) {
   const auto a = summarize(mesh).at(CellType::kTet10), b = summarize(input).at(CellType::kTet10);
   EXPECT_GT(a.mean[0], b.mean[0] + 1e-4) << "the corner mesh should improve";
   EXPECT_GT(a.worst[0], b.worst[0]) << "the worst corner tet should improve";
+}
+
+TEST(QuadraticShape, Quad9AndHex27StayStraightAndNeverWorse) {
+  if (!have_gmsh()) GTEST_SKIP() << "gmsh not installed";
+  Mesh quads, hexes;
+  ASSERT_TRUE(gmsh_order2("quads", std::string(kPolygon) + "Recombine Surface{1};\n", 2, &quads));
+  ASSERT_TRUE(gmsh_order2("hexes", kHexBox, 3, &hexes));
+  ASSERT_EQ(quads.cell_type(0), CellType::kQuad9);
+  ASSERT_EQ(hexes.cell_type(0), CellType::kHex27);
+  perturb_straight(&hexes, 0.06, 7);  // a quarter of the 0.25 spacing
+  for (Mesh* mesh : {&quads, &hexes}) {
+    const std::string label = cell_name(mesh->cell_type(0));
+    const Mesh input = *mesh;
+    run_auto(mesh);
+    expect_never_worse(input, *mesh, label);
+    EXPECT_GT(expect_edges_kept(input, *mesh, label), 10) << label << ": the corners should move";
+    EXPECT_GT(summarize(*mesh).at(mesh->cell_type(0)).mean[0],
+              summarize(input).at(mesh->cell_type(0)).mean[0] + 1e-4)
+        << label << ": the corner mesh should improve";
+  }
 }
 
 // Interior edges curved on purpose keep their shape relative to their chord (turned and scaled
