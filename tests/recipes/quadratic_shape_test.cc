@@ -294,9 +294,10 @@ TEST(QuadraticShape, Quad9AndHex27StayStraightAndNeverWorse) {
   }
 }
 
-// Interior edges curved on purpose keep their shape relative to their chord (turned and scaled
-// with it), and straight ones stay straight.
-TEST(QuadraticShape, CurvedInteriorEdgesKeepTheirShape) {
+// Interior edges curved on purpose: straight ones stay straight, the curved ones follow their
+// chords and then their nodes are relaxed by the curved-node stage, which must raise the det J
+// ratio (the curvature is not needed here) without breaking any guarantee.
+TEST(QuadraticShape, CurvedInteriorEdgesAreRelaxedStraightOnesStayStraight) {
   if (!have_gmsh()) GTEST_SKIP() << "gmsh not installed";
   Mesh mesh;
   ASSERT_TRUE(gmsh_order2("polygon_curved", kPolygon, 2, &mesh));
@@ -321,14 +322,19 @@ TEST(QuadraticShape, CurvedInteriorEdgesKeepTheirShape) {
   }
   ASSERT_GT(curved, 20);
   const Mesh input = mesh;
-  run_auto(&mesh);
+  const RecipeResult result = run_auto(&mesh);
   expect_never_worse(input, mesh, "curved polygon tri6");
   expect_edges_kept(input, mesh, "curved polygon tri6");
+  EXPECT_TRUE(std::any_of(result.stages.begin(), result.stages.end(), [](const StageResult& s) {
+    return s.name.find("curved nodes") != std::string::npos;
+  }));
+  EXPECT_GT(summarize(mesh).at(CellType::kTri6).mean[2],
+            summarize(input).at(CellType::kTri6).mean[2] + 1e-4)
+      << "the det J ratio should rise";
   const auto d0 = edge_deviation(input), d1 = edge_deviation(mesh);
-  for (const auto& [e, dev] : d0)
-    if (dev > 1e-3) {
-      EXPECT_NEAR(d1.at(e), dev, 1e-9) << "edge " << e.first << "-" << e.second;
-    }
+  int less_curved = 0;
+  for (const auto& [e, dev] : d0) less_curved += dev > 1e-3 && d1.at(e) < dev;
+  EXPECT_GT(less_curved, curved / 2) << "most curved edges should straighten";
 }
 
 // A curved boundary: with the boundary fixed every boundary node stays where it is; sliding,
