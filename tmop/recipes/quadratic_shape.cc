@@ -292,10 +292,10 @@ int find_violators(const Mesh& mesh, const std::vector<QuadraticCellMeasures>& m
 // The stage over curved interior nodes: mid-edge, mid-face and centre nodes off the corners'
 // interpolation (curved by the input or by untangling; this recipe never curves a straight
 // edge) and not on the boundary (`boundary` or a sliding geometry) move, everything else is
-// fixed. Metric size_shape_barrier with the straight-sided cell's Jacobian as the target (an
-// elastic-like pull toward the corner cell, rotation-invariant), so the det J ratio and
-// pointwise mean ratio of curved cells rise. The same guard as the corner stage; a round whose
-// violators cannot be held leaves the nodes as they were.
+// fixed. Terms: the caller's shape metric and target at every sample point (the pointwise mean
+// ratio) and the size barrier toward the straight-sided cell's Jacobian (det J toward its
+// constant: the det J ratio), so curvature the cells do not need is relaxed. The same guard as
+// the corner stage; when its rounds run out the nodes stay as they were.
 void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeometry* geometry,
                         const std::vector<char>& boundary,
                         const std::vector<QuadraticCellMeasures>& m0,

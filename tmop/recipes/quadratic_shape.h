@@ -26,9 +26,24 @@
 //     det J ratio min / max over the sample points not below the input's worst;
 //   - the mean over the cells of the type of each of these does not fall.
 // Cells that break one are held at their input shape (their corners join the fixed set) and the
-// corner stage solves again from the input, at most guard_rounds + 2 times; when a mean still
-// falls, the cells whose own measure fell are held too. If a round limit is reached the input is
-// kept. With guard_worst false only validity is enforced.
+// corner stage solves again from the input, at most guard_rounds + 2 times. Where a mean fell,
+// the cells whose own measure fell most are held until they give back the shortfall; cells next
+// to a cell whose input is below the round's worst are held only when the others cannot give
+// back half of it (holding them lowers the worst again). If a round limit is reached the input
+// is kept. With guard_worst false only validity is enforced.
+//
+// Then a second stage moves only the interior nodes that are already curved (off the corners'
+// interpolation: curved by the input or by untangling; straight edges stay fixed, boundary
+// nodes too): the shape metric toward the ideal element plus 0.3 x the size barrier toward the
+// straight-sided cell (det J toward its constant), under the same guard (violators held, the
+// nodes kept as they were when the rounds run out). Untangled gear tri6: det J ratio worst
+// 0.08 -> 0.18, pointwise mean ratio worst 0.46 -> 0.56.
+//
+// Measured (tmop_optimize, default recipe, one thread): Gmsh t5 -order 2 (13,391 tet10): corner
+// mean ratio worst 0.367 -> 0.387, mean 0.784 -> 0.804, dihedral 11.75..156.64 -> 13.16..154.33
+// deg, 0 slivers, 828 curved (interface) edges kept, every straight edge straight, 2.5 s (the
+// all-sample-point stage: 0.249, 3 slivers, 13,464 interior edges curved where the input had 828,
+// 34 s).
 //
 // Used by improve_shape for volume and planar meshes with quadratic elements; surface meshes
 // (tri6 in 3D) keep the all-sample-point stage.
