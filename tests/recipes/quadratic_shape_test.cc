@@ -246,6 +246,51 @@ TEST(QuadraticShape, CornerMeshHasTheLinearCellsOnTheSameVertices) {
   EXPECT_FALSE(use_quadratic_shape(c));
 }
 
+// A valid tri6 whose corner triangle is inverted (its bottom edge bulges far below the opposite
+// corner): the barrier corner stage cannot include it, so it is held; the free vertex of its
+// neighbour still moves and both cells stay certified.
+TEST(QuadraticShape, ValidCellWithAnInvertedCornerCellIsHeld) {
+  Mesh m;
+  m.space_dim = 2;
+  // 0, 1, 2: the thin cell's corners (clockwise), 3: the neighbour's free corner; mid nodes 4-8.
+  const double x[][2] = {{0, 0},
+                         {1, 0},
+                         {0.5, -0.02},
+                         {0.9, 0.5},
+                         {0.50592843358, -0.20415890975},
+                         {0.75419913964, -0.01822946770},
+                         {0.38481096833, -0.14721855277},
+                         {0.95, 0.25},
+                         {0.7, 0.24}};
+  for (const auto& p : x) m.add_vertex(p);
+  const std::int32_t thin[] = {0, 1, 2, 4, 5, 6};
+  const std::int32_t right[] = {2, 1, 3, 5, 7, 8};  // edge 2-1 shares mid node 5
+  m.add_cell(CellType::kTri6, thin);
+  m.add_cell(CellType::kTri6, right);
+  double nodes[kMaxCellNodes * 3] = {};
+  for (int i = 0; i < 6; ++i)
+    for (int k = 0; k < 2; ++k) nodes[3 * i + k] = m.vertex(thin[i])[k];
+  const QuadraticCellMeasures thin_m = quadratic_cell_measures(CellType::kTri6, nodes);
+  ASSERT_TRUE(thin_m.valid);
+  ASSERT_LT(thin_m.corner, 0);
+  const QualityReport before = compute_quality(m);
+  ASSERT_EQ(before.inverted_cells, 0);
+  const Mesh input = m;
+  ShapeOptions opt;
+  opt.solver.threads = 1;
+  opt.fixed.assign(m.num_vertices(), 1);
+  opt.fixed[3] = 0;  // only the neighbour's free corner moves; its mid nodes follow
+  RecipeResult result;
+  const Status s = improve_shape(&m, opt, &result);
+  ASSERT_TRUE(s.ok()) << s.message();
+  for (int i = 0; i < 6; ++i)
+    for (int k = 0; k < 2; ++k) EXPECT_EQ(m.vertex(thin[i])[k], input.vertex(thin[i])[k]);
+  EXPECT_NE(m.vertex(3)[0], input.vertex(3)[0]) << "the free corner should move";
+  const QualityReport after = compute_quality(m);
+  EXPECT_EQ(after.inverted_cells, 0);
+  EXPECT_EQ(after.certified_cells, 2);
+}
+
 TEST(QuadraticShape, PolygonTri6StaysStraightAndNeverWorse) {
   if (!have_gmsh()) GTEST_SKIP() << "gmsh not installed";
   Mesh mesh;

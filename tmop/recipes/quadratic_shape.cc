@@ -199,6 +199,23 @@ std::vector<TypeBounds> type_bounds(const Mesh& mesh, const std::vector<Quadrati
   return out;
 }
 
+// corner_mesh without the cells flagged in `drop` (empty: none).
+Mesh corner_mesh_without(const Mesh& mesh, const std::vector<char>& drop) {
+  Mesh out;
+  out.space_dim = mesh.space_dim;
+  out.plane_z = mesh.plane_z;
+  out.coords = mesh.coords;
+  out.point_data = mesh.point_data;
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!drop.empty() && drop[c]) continue;
+    const CellType t = mesh.cell_type(c);
+    out.add_cell(cell_info(t).linear, mesh.cell(c),
+                 c < static_cast<int>(mesh.cell_region.size()) ? mesh.cell_region[c] : 0,
+                 c < static_cast<int>(mesh.cell_entity.size()) ? mesh.cell_entity[c] : 0);
+  }
+  return out;
+}
+
 // The cells of `mesh` that break a guarantee of quadratic_shape.h against the input (m0, b0):
 // flags them in *violates and returns their count; *first describes one.
 int find_violators(const Mesh& mesh, const std::vector<QuadraticCellMeasures>& m0,
@@ -405,20 +422,7 @@ bool use_quadratic_shape(const Mesh& mesh) {
   return false;
 }
 
-Mesh corner_mesh(const Mesh& mesh) {
-  Mesh out;
-  out.space_dim = mesh.space_dim;
-  out.plane_z = mesh.plane_z;
-  out.coords = mesh.coords;
-  out.point_data = mesh.point_data;
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    const CellType t = mesh.cell_type(c);
-    out.add_cell(cell_info(t).linear, mesh.cell(c),
-                 c < static_cast<int>(mesh.cell_region.size()) ? mesh.cell_region[c] : 0,
-                 c < static_cast<int>(mesh.cell_entity.size()) ? mesh.cell_entity[c] : 0);
-  }
-  return out;
-}
+Mesh corner_mesh(const Mesh& mesh) { return corner_mesh_without(mesh, {}); }
 
 QuadraticCellMeasures quadratic_cell_measures(CellType type, const double* nodes) {
   QuadraticCellMeasures m;
@@ -470,18 +474,6 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
   const std::vector<QuadraticCellMeasures> m0 = all_measures(*mesh, options.solver.threads);
   const std::vector<TypeBounds> b0 = type_bounds(*mesh, m0);
 
-  // The corner problem: corner cells, the same vertices; targets from a reference mesh come
-  // from its corner mesh too. The caller's extra points belong to quadratic cells (certificate
-  // points): a corner simplex has one Jacobian, so they add nothing there.
-  Mesh linear = corner_mesh(*mesh);
-  Mesh reference_linear;
-  ShapeOptions lo = options;
-  lo.extra_points = SampleSet();
-  lo.geometry = geometry;
-  if (options.target.reference) {
-    reference_linear = corner_mesh(*options.target.reference);
-    lo.target.reference = &reference_linear;
-  }
   std::vector<char> fixed = options.fixed;
   if (fixed.empty()) {
     if (geometry)
@@ -489,12 +481,32 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
     else
       fixed = boundary_vertex_mask(*mesh);  // mid nodes included; region interfaces too
   }
+  // A valid curved cell can have an inverted corner cell (an edge bulging out past the opposite
+  // corner); the barrier corner stage cannot start from it, so such cells are left out of the
+  // corner problem and held.
+  std::vector<char> drop(mesh->num_cells(), 0);
+  for (int c = 0; c < mesh->num_cells(); ++c) {
+    if (!is_quadratic_element(*mesh, c, mesh->dim()) || m0[c].corner > 0) continue;
+    drop[c] = 1;
+    for (int i = 0; i < mesh->cell_size(c); ++i) fixed[mesh->cell(c)[i]] = 1;
+  }
+  // The corner problem: corner cells, the same vertices; targets from a reference mesh come
+  // from its corner mesh too. The caller's extra points belong to quadratic cells (certificate
+  // points): a corner simplex has one Jacobian, so they add nothing there.
+  Mesh linear = corner_mesh_without(*mesh, drop);
+  Mesh reference_linear;
+  ShapeOptions lo = options;
+  lo.extra_points = SampleSet();
+  lo.geometry = geometry;
+  if (options.target.reference) {
+    reference_linear = corner_mesh_without(*options.target.reference, drop);
+    lo.target.reference = &reference_linear;
+  }
 
   const std::vector<char> boundary = fixed;  // before the guard holds any cell
   const int max_rounds = options.guard_rounds + 2;
   const double tol = options.guard_tolerance;
   std::vector<char> placed;
-  int held_cells = 0;
   for (int round = 0; round <= max_rounds; ++round) {
     linear.coords = original;
     lo.fixed = fixed;
@@ -528,7 +540,6 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
         f = 1;
       }
     }
-    held_cells += violators;
     StageResult& last = result->stages.back();
     if (newly_fixed == 0 || round == max_rounds) {
       mesh->coords = original;
@@ -539,7 +550,6 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
     last.termination +=
         "; quadratic guard: " + std::to_string(violators) + " cells held (" + first + ")";
   }
-  (void)held_cells;
   relax_curved_nodes(mesh, options, geometry, boundary, m0, b0, result);
   result->after = measure_mesh(*mesh, options.rule);
   result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
