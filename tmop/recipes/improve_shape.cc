@@ -9,6 +9,7 @@
 #include "tmop/quality/parallel_for.h"
 #include "tmop/recipes/boundary_layer.h"
 #include "tmop/recipes/guard.h"
+#include "tmop/recipes/quadratic_shape.h"
 
 namespace tmop {
 
@@ -92,6 +93,8 @@ Status shape_terms(const Mesh& mesh, const ShapeOptions& options, std::vector<Te
 }  // namespace
 
 Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* result) {
+  // Quadratic cells: through their corner mesh (quadratic_shape.h); it calls back with that.
+  if (use_quadratic_shape(*mesh)) return improve_quadratic_shape(mesh, options, result);
   const auto start = std::chrono::steady_clock::now();
   *result = RecipeResult();
   result->recipe = "shape";
