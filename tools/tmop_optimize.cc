@@ -446,6 +446,7 @@ int main(int argc, char** argv) {
   // cells; the input on a tie).
   Mesh input_copy;
   if (FLAGS_write_on_failure) input_copy = mesh;
+  const std::vector<double> input_coords = mesh.coords;
   QualityReport quality_before = print_quality("before:", mesh);
   quality_before.opposite_convention = flipped;  // as tmop_quality reports the input
   if ((FLAGS_recipe == "shape" || FLAGS_recipe == "equal_edge" || FLAGS_recipe == "size_adapt" ||
@@ -573,6 +574,12 @@ int main(int argc, char** argv) {
       recipe_status.ok() ? std::string("ok") : recipe_status.message() + " (" + written_note + ")";
   QualityReport quality_after = print_quality("after:", mesh, !mesh.cell_data.empty());
   quality_after.opposite_convention = flipped;  // written back in the input's convention
+  if (recipe_status.ok() && result.guard_held_cells > 0)
+    std::printf(mesh.coords == input_coords
+                    ? "guard: no move kept every guarantee (%d cells would have got worse): the "
+                      "mesh is unchanged; --guarantee=worst or off accepts a trade\n"
+                    : "guard: %d cells held at their input shape to keep the guarantees\n",
+                result.guard_held_cells);
   if (result.layer_cells >= 0)
     std::printf(result.recipe == "sliver"
                     ? "boundary layer: %d cells, %d vertices held on its outer surface\n"

@@ -336,6 +336,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   const CoordinateFrame frame = spec.boundary ? spec.frame : normalizing_frame(*mesh);
   if (!(frame.length > 0)) return Status::Failure("the mesh has no edge of positive length");
   to_frame(frame, mesh);
+  const std::vector<double> mapped_start = mesh->coords;  // to tell the vertices that moved
   // Surface meshes: per-cell tangent frames from the geometry's normals at the cell's corners.
   Frames frames;
   auto update_frames = [&]() {
@@ -797,12 +798,16 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                                         " cells inverted at sample points, the last round " +
                                         std::to_string(last_round_inverted) + ")");
   }
-  from_frame(frame, mesh);
-  // Mapping back is not bit-exact; vertices that were never free keep their input coordinates.
+  // Mapping back is not bit-exact: vertices that were never free or did not move keep their
+  // input coordinates (a stage that moves nothing returns the input's bits).
+  std::vector<char> keep(mesh->num_vertices());
+  const int sd = mesh->space_dim;
   for (int v = 0; v < mesh->num_vertices(); ++v)
-    if (fixed[v] || !in_problem[v])
-      for (int a = 0; a < mesh->space_dim; ++a)
-        mesh->vertex(v)[a] = original[std::size_t(v) * mesh->space_dim + a];
+    keep[v] = fixed[v] || !in_problem[v] ||
+              std::equal(mesh->vertex(v), mesh->vertex(v) + sd, &mapped_start[std::size_t(v) * sd]);
+  from_frame(frame, mesh);
+  for (int v = 0; v < mesh->num_vertices(); ++v)
+    if (keep[v]) std::copy_n(&original[std::size_t(v) * sd], sd, mesh->vertex(v));
   if (barrier && after.inverted > 0)  // cannot happen: every accepted step was evaluated
     return fail("internal error: a barrier stage produced inverted elements");
   result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

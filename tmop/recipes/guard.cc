@@ -1,5 +1,6 @@
 #include "tmop/recipes/guard.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -58,8 +59,11 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
   };
   bool warm = false;  // this round starts from a warm start, not from the input
   // The best result that kept every guarantee after its violators were put back (no solve).
+  // Kept only when it beats the input by more than the tolerance.
   std::vector<double> best;
-  double best_score = 0;
+  const double input_score =
+      guarantee_score(baseline, baseline.input) + options.guarantees.tolerance;
+  double best_score = input_score;
   for (int round = 0;; ++round) {
     Status s = solve(fixed, weight, round);
     if (!s.ok() && warm) {
@@ -82,7 +86,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
     if (bad.empty()) {
       // Rounds that ended by holding every vertex give the input back: an earlier round's
       // result with its violators put back keeps the guarantees and some of the gain.
-      if (!best.empty() && mesh->coords == original && best_score > guarantee_score(baseline, values)) {
+      if (!best.empty() && mesh->coords == original) {
         mesh->coords = best;
         note("guard: an earlier round's result with its violators put back kept");
       }
@@ -96,7 +100,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       GuaranteeValues reverted = values;
       if (revert_violators(mesh, original, baseline, options, 8, &reverted)) {
         const double score = guarantee_score(baseline, reverted);
-        if (best.empty() || score > best_score) best = mesh->coords, best_score = score;
+        if (score > std::max(best_score, input_score)) best = mesh->coords, best_score = score;
       }
       mesh->coords = solved;
     }

@@ -150,7 +150,10 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
   guard.rounds = options.guard_rounds;
   guard.threads = threads;
   guard.verbose = options.solver.verbose;
-  auto solve = [&](const std::vector<char>& held, const std::vector<double>&, int round) {
+  guard.soft_rounds = options.guard_soft_rounds;
+  SampleSet weighted_points;  // canonical + extra points, for the soft rounds' cell weights
+  auto solve = [&](const std::vector<char>& held, const std::vector<double>& cell_weight,
+                   int round) {
     StageSpec stage;
     stage.name = round == 0 ? "shape" : "shape (guard round " + std::to_string(round) + ")";
     stage.rule = options.rule;
@@ -160,6 +163,21 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
     if (geometry) geometry->apply(&stage);
     stage.power = options.power > 0 ? options.power : 2.0;
     stage.terms = terms;
+    bool weighted = false;
+    for (double w : cell_weight) weighted = weighted || w != 1;
+    if (weighted) {
+      if (weighted_points.cell.empty()) {
+        weighted_points = canonical_sample_set(*mesh, options.rule);
+        for (std::size_t p = 0; p < options.extra_points.size(); ++p)
+          weighted_points.add(options.extra_points.cell[p], &options.extra_points.xi[3 * p],
+                              options.extra_points.weight[p]);
+      }
+      for (TermSpec& t : stage.terms) {
+        t.weights.resize(weighted_points.size(), 1.0);
+        for (std::size_t p = 0; p < weighted_points.size(); ++p)
+          t.weights[p] *= cell_weight[weighted_points.cell[p]];
+      }
+    }
     StageResult sr;
     Status s = optimize_stage(mesh, stage, &sr);
     if (s.ok()) result->stages.push_back(sr);

@@ -51,6 +51,9 @@ struct ShapeOptions {
   bool guard_means = true;
   double guard_tolerance = 1e-6;
   int guard_rounds = 4;
+  // Rounds (before the held ones) that hold nothing but weight the violators' points up x8
+  // and solve again from the input (GuardOptions::soft_rounds).
+  int guard_soft_rounds = 0;
   // Non-simplex cells (quad, hex, wedge, pyramid; judged by the scaled Jacobian, which sees only
   // angles) are driven to the ideal angles with the input's smoothed aspect (composed aspect
   // "smooth", smoothed_aspect.h) instead of the unit-aspect ideal, when the target is the

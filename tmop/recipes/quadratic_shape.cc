@@ -15,6 +15,7 @@
 #include "tmop/element/shape.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/cell_quality.h"
+#include "tmop/quality/guarantees.h"
 #include "tmop/quality/parallel_for.h"
 #include "tmop/recipes/recipe_geometry.h"
 #include "tmop/target/target.h"
@@ -219,8 +220,11 @@ Mesh corner_mesh_without(const Mesh& mesh, const std::vector<char>& drop) {
 // The cells of `mesh` that break a guarantee of quadratic_shape.h against the input (m0, b0):
 // flags them in *violates and returns their count; *first describes one.
 int find_violators(const Mesh& mesh, const std::vector<QuadraticCellMeasures>& m0,
-                   const std::vector<TypeBounds>& b0, bool guard_worst, double tol, int threads,
-                   std::vector<char>* out, std::string* first_out) {
+                   const std::vector<TypeBounds>& b0, const GuaranteeBaseline& g0,
+                   const ShapeOptions& options, std::vector<char>* out, std::string* first_out) {
+  const bool guard_worst = options.guard_worst;
+  const double tol = options.guard_tolerance;
+  const int threads = options.solver.threads;
   const int d = mesh.dim();
   const std::vector<QuadraticCellMeasures> m1 = all_measures(mesh, threads);
   std::vector<char>& violates = *out;
@@ -303,6 +307,14 @@ int find_violators(const Mesh& mesh, const std::vector<QuadraticCellMeasures>& m
       }
     }
   }
+  if (guard_worst) {
+    // The guarantees as tmop_optimize checks them (quality/guarantees.h): per region too.
+    GuaranteeOptions g;
+    g.tolerance = tol;
+    g.means = options.guard_means;
+    const GuaranteeValues values = guarantee_values(mesh, threads);
+    for (int c : guard_violators(g0, values, g)) flag(c, "breaks a guarantee of its type or region");
+  }
   return violators;
 }
 
@@ -316,7 +328,8 @@ int find_violators(const Mesh& mesh, const std::vector<QuadraticCellMeasures>& m
 void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeometry* geometry,
                         const std::vector<char>& boundary,
                         const std::vector<QuadraticCellMeasures>& m0,
-                        const std::vector<TypeBounds>& b0, RecipeResult* result) {
+                        const std::vector<TypeBounds>& b0, const GuaranteeBaseline& g0,
+                        RecipeResult* result) {
   const int d = mesh->dim();
   std::vector<char> fixed(mesh->num_vertices(), 1);
   Mesh straight = *mesh;
@@ -388,8 +401,7 @@ void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeo
     std::vector<char> violates;
     std::string first;
     const int violators =
-        find_violators(*mesh, m0, b0, options.guard_worst, options.guard_tolerance,
-                       options.solver.threads, &violates, &first);
+        find_violators(*mesh, m0, b0, g0, options, &violates, &first);
     if (violators == 0) return;
     int newly_fixed = 0;
     for (int c = 0; c < mesh->num_cells(); ++c) {
@@ -473,6 +485,7 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
   const std::vector<double> original = mesh->coords;
   const std::vector<QuadraticCellMeasures> m0 = all_measures(*mesh, options.solver.threads);
   const std::vector<TypeBounds> b0 = type_bounds(*mesh, m0);
+  const GuaranteeBaseline g0 = guarantee_baseline(*mesh, options.solver.threads);
 
   std::vector<char> fixed = options.fixed;
   if (fixed.empty()) {
@@ -505,7 +518,6 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
 
   const std::vector<char> boundary = fixed;  // before the guard holds any cell
   const int max_rounds = options.guard_rounds + 2;
-  const double tol = options.guard_tolerance;
   std::vector<char> placed;
   for (int round = 0; round <= max_rounds; ++round) {
     linear.coords = original;
@@ -528,8 +540,7 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
 
     std::vector<char> violates;
     std::string first;
-    const int violators = find_violators(*mesh, m0, b0, options.guard_worst, tol,
-                                         options.solver.threads, &violates, &first);
+    const int violators = find_violators(*mesh, m0, b0, g0, options, &violates, &first);
     if (violators == 0) break;
     int newly_fixed = 0;
     for (int c = 0; c < mesh->num_cells(); ++c) {
@@ -550,7 +561,7 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
     last.termination +=
         "; quadratic guard: " + std::to_string(violators) + " cells held (" + first + ")";
   }
-  relax_curved_nodes(mesh, options, geometry, boundary, m0, b0, result);
+  relax_curved_nodes(mesh, options, geometry, boundary, m0, b0, g0, result);
   result->after = measure_mesh(*mesh, options.rule);
   result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
