@@ -57,6 +57,24 @@ TEST(Guarantees, AWorseQuadIsCaughtWhileTheGlobalWorstIsATriangle) {
   EXPECT_TRUE(check_guarantees(b, guarantee_values(input, 1)).empty());
 }
 
+TEST(Guarantees, CellsInvertedInTheInputMayEndAtAnyValidShape) {
+  // The quad folded (vertex 5 pulled across): untangled to a sheared but valid quad, whose
+  // scaled Jacobian is below the input's other cells' - not a broken guarantee.
+  Mesh input = tri_quad_strip();
+  input.vertex(5)[0] = 0.5;
+  input.vertex(5)[1] = -0.5;
+  const GuaranteeBaseline b = guarantee_baseline(input, 1);
+  ASSERT_TRUE(b.input.inverted[2]);
+  Mesh result = tri_quad_strip();
+  result.vertex(5)[0] = 2.6;
+  EXPECT_LT(value(guarantee_values(result, 1), 2, GuaranteeMeasure::kScaledJacobian), 0.9);
+  EXPECT_TRUE(check_guarantees(b, guarantee_values(result, 1)).empty());
+  // Still inverted: not a new inversion either; the triangles are still guarded.
+  EXPECT_TRUE(check_guarantees(b, b.input).empty());
+  result.vertex(2)[0] = 0.4;
+  EXPECT_FALSE(check_guarantees(b, guarantee_values(result, 1)).empty());
+}
+
 TEST(Guarantees, RegionsAreGroupsOfTheirOwn) {
   const Mesh input = tri_quad_strip(/*regions=*/true);
   const GuaranteeBaseline b = guarantee_baseline(input, 1);

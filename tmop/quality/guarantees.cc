@@ -158,6 +158,9 @@ GuaranteeBaseline guarantee_baseline(const Mesh& input, int threads) {
   b.cell_type.assign(input.cell_types.begin(), input.cell_types.end());
   std::map<GroupKey, int> worst_index, mean_index;
   for (std::int64_t c = 0; c < n; ++c) {
+    // Cells inverted in the input are in no group: untangling may leave them at any valid
+    // shape, and their measures (e.g. a hex27's corners) say nothing of their validity.
+    if (b.input.inverted[c]) continue;
     const int type = static_cast<int>(input.cell_types[c]);
     const int region =
         c < static_cast<std::int64_t>(input.cell_region.size()) ? input.cell_region[c] : 0;

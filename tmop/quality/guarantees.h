@@ -18,7 +18,8 @@
 // and per tet (tet10: its corner tet) whether it is a sliver (quality_report.h's definition).
 //
 // Guarantees of a result against its input, tolerance t (absolute; measures are in [-1, 1] or
-// degrees):
+// degrees); worst and mean are over the cells valid in the input (an inverted input cell may end
+// at any valid shape):
 //   worst     for every (cell type, region, measure), the minimum over those cells does not
 //             fall by more than t (region = Mesh::cell_region);
 //   mean      for every (cell type, measure) among mean_ratio, scaled_jacobian,

@@ -553,6 +553,38 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
     }
     StageResult& last = result->stages.back();
     if (newly_fixed == 0 || round == max_rounds) {
+      // Without a solve: the violators' corners back at their input positions (their other
+      // nodes placed again from the corners), repeated on the cells that then break one.
+      int left = violators;
+      for (int pass = 0; pass < 8 && left > 0; ++pass) {
+        int moved = 0;
+        for (int c = 0; c < mesh->num_cells(); ++c) {
+          if (!violates[c]) continue;
+          for (int i = 0; i < cell_info(mesh->cell_type(c)).num_corners; ++i) {
+            const std::size_t v = std::size_t(mesh->cell(c)[i]) * mesh->space_dim;
+            for (int a = 0; a < mesh->space_dim; ++a) {
+              moved += mesh->coords[v + a] != original[v + a];
+              mesh->coords[v + a] = original[v + a];
+            }
+          }
+        }
+        if (moved == 0) break;
+        // place_nodes leaves the nodes of unmoved corners where they are: start them all from
+        // their input positions.
+        for (int v = 0; v < mesh->num_vertices(); ++v)
+          if (placed[v])
+            std::copy_n(&original[std::size_t(v) * mesh->space_dim], mesh->space_dim,
+                        mesh->vertex(v));
+        place_nodes(original, mesh, &placed);
+        if (geometry && geometry->constraints)
+          project_sliding_nodes(*geometry, original, placed, mesh);
+        left = find_violators(*mesh, m0, b0, g0, options, &violates, &first);
+      }
+      if (left == 0 && mesh->coords != original) {
+        last.termination += "; quadratic guard: " + std::to_string(violators) +
+                            " cells would get worse: put back at their input shape";
+        break;
+      }
       mesh->coords = original;
       last.termination += "; quadratic guard: " + std::to_string(violators) +
                           " cells would get worse (" + first + "): input mesh kept";
