@@ -4,6 +4,9 @@
   mesh_dump.py gmsh FILE...       dump each FILE as read by the Gmsh API (gmsh.open) into
                                   FILE.gmsh.dump
   mesh_dump.py meshio FILE...     dump each FILE as read by meshio into FILE.meshio.dump
+  mesh_dump.py meshio-write-ugrid DIR
+                                  write one UGRID mesh per encoding (ASCII, b8, lb8, r8, lr8)
+                                  with meshio into DIR, each with a NAME.expected dump
   mesh_dump.py meshio-write DIR   write test meshes with meshio in every format into DIR, each
                                   with a NAME.expected dump of what was written
 
@@ -64,7 +67,7 @@ def meshio_cells(mesh):
     cells = []
     for i, block in enumerate(mesh.cells):
         region = None
-        for key in ("gmsh:physical", "medit:ref", "CellEntityIds"):
+        for key in ("gmsh:physical", "medit:ref", "ugrid:ref", "CellEntityIds"):
             if key in mesh.cell_data:
                 region = mesh.cell_data[key][i]
                 break
@@ -143,10 +146,30 @@ def meshio_write(outdir):
         emit("meshio", mesh.points, meshio_cells(mesh), path + ".expected")
 
 
+def meshio_write_ugrid(outdir):
+    import meshio
+    import numpy as np
+    types = ["triangle", "quad", "tetra", "pyramid", "wedge", "hexahedron"]
+    points, cells, _, _ = sample(types, False)
+    # meshio 5's UGRID writer fails on per-block cell data and writes surface ID 1 on every
+    # face without it; UGRID has no volume IDs (0 on reading).
+    mesh = meshio.Mesh(points, cells)
+    refs = [np.ones(2, dtype=int) if t in ("triangle", "quad") else np.zeros(2, dtype=int)
+            for t in types]
+    tagged = meshio.Mesh(points, cells, cell_data={"ugrid:ref": refs})
+    for name in ("a.ugrid", "a.b8.ugrid", "a.lb8.ugrid", "a.r8.ugrid", "a.lr8.ugrid"):
+        path = outdir + "/" + name
+        meshio.ugrid.write(path, mesh)
+        emit("meshio", mesh.points, meshio_cells(tagged), path + ".expected")
+
+
 if __name__ == "__main__":
-    if len(sys.argv) < 3 or sys.argv[1] not in ("gmsh", "meshio", "meshio-write"):
+    if len(sys.argv) < 3 or sys.argv[1] not in ("gmsh", "meshio", "meshio-write",
+                                                "meshio-write-ugrid"):
         sys.exit(__doc__)
-    if sys.argv[1] == "meshio-write":
+    if sys.argv[1] == "meshio-write-ugrid":
+        meshio_write_ugrid(sys.argv[2])
+    elif sys.argv[1] == "meshio-write":
         meshio_write(sys.argv[2])
     elif sys.argv[1] == "meshio":
         for f in sys.argv[2:]:
