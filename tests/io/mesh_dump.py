@@ -7,6 +7,9 @@
   mesh_dump.py meshio-write-ugrid DIR
                                   write one UGRID mesh per encoding (ASCII, b8, lb8, r8, lr8)
                                   with meshio into DIR, each with a NAME.expected dump
+  mesh_dump.py meshio-write-exodus DIR
+                                  write a.exo with meshio (every type both know) into DIR,
+                                  with a.exo.expected
   mesh_dump.py meshio-write DIR   write test meshes with meshio in every format into DIR, each
                                   with a NAME.expected dump of what was written
 
@@ -163,11 +166,24 @@ def meshio_write_ugrid(outdir):
         emit("meshio", mesh.points, meshio_cells(tagged), path + ".expected")
 
 
+def meshio_write_exodus(outdir):
+    import meshio
+    types = ["line", "triangle", "quad", "tetra", "pyramid", "wedge", "hexahedron",
+             "triangle6", "quad9", "tetra10"]
+    points, cells, _, _ = sample(types, True)
+    mesh = meshio.Mesh(points, cells)
+    path = outdir + "/a.exo"
+    meshio.exodus.write(path, mesh)
+    emit("meshio", mesh.points, meshio_cells(mesh), path + ".expected")
+
+
 if __name__ == "__main__":
     if len(sys.argv) < 3 or sys.argv[1] not in ("gmsh", "meshio", "meshio-write",
-                                                "meshio-write-ugrid"):
+                                                "meshio-write-ugrid", "meshio-write-exodus"):
         sys.exit(__doc__)
-    if sys.argv[1] == "meshio-write-ugrid":
+    if sys.argv[1] == "meshio-write-exodus":
+        meshio_write_exodus(sys.argv[2])
+    elif sys.argv[1] == "meshio-write-ugrid":
         meshio_write_ugrid(sys.argv[2])
     elif sys.argv[1] == "meshio-write":
         meshio_write(sys.argv[2])

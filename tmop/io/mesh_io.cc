@@ -31,11 +31,13 @@ bool is_openmesh_ext(const std::string& ext) {
   return ext == "obj" || ext == "off" || ext == "ply";
 }
 
-const char* kKnown = "known: .msh .vtk .vtu .mesh .ugrid .obj .off .ply .stl";
+const char* kKnown = "known: .msh .vtk .vtu .mesh .ugrid .exo .e .obj .off .ply .stl";
+
+bool is_exodus_ext(const std::string& ext) { return ext == "exo" || ext == "e"; }
 
 bool is_known_ext(const std::string& ext) {
   return ext == "msh" || ext == "vtk" || ext == "vtu" || ext == "mesh" || ext == "stl" ||
-         ext == "ugrid" || is_openmesh_ext(ext);
+         ext == "ugrid" || is_exodus_ext(ext) || is_openmesh_ext(ext);
 }
 
 }  // namespace
@@ -85,6 +87,12 @@ Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair) {
     if (!is_known_ext(ext))
       return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
                              ")");
+    if (is_exodus_ext(ext)) {
+      // libexodusii reads the file by its name.
+      io::read_exodus(path, mesh);
+      io::finish_read(mesh);
+      return Status::Ok();
+    }
     const std::string data = io::read_file(path, ext);
     if (ext == "msh") io::read_msh(path, data, mesh);
     if (ext == "vtk") io::read_vtk(path, data, mesh);
@@ -139,6 +147,7 @@ void check_writable_or_throw(const std::string& path, const Mesh& mesh,
   try {
     if (ext == "mesh") io::check_medit_writable(mesh);
     if (ext == "ugrid") io::check_ugrid_writable(path, mesh);
+    if (is_exodus_ext(ext)) io::check_exodus_writable(mesh);
     if (ext == "vtk") io::check_vtk_writable(mesh);
     if (ext == "stl") io::check_stl_writable(mesh, options);
     if (is_openmesh_ext(ext)) io::check_openmesh_writable(ext, mesh);
@@ -190,6 +199,10 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
         throw Error(path + ": " + e.what());
       }
       tmp.commit();
+      return Status::Ok();
+    }
+    if (is_exodus_ext(ext)) {
+      io::write_exodus(path, mesh);  // atomically, through its own temporary file
       return Status::Ok();
     }
     std::string bytes;
