@@ -10,6 +10,9 @@
   mesh_dump.py meshio-write-exodus DIR
                                   write a.exo with meshio (every type both know) into DIR,
                                   with a.exo.expected
+  mesh_dump.py cgns-h5 FILE...    dump each CGNS/HDF5 FILE as read node by node with h5py (the
+                                  SIDS layout: first base, first zone, its Elements_t nodes)
+                                  into FILE.cgns-h5.dump
   mesh_dump.py meshio-write DIR   write test meshes with meshio in every format into DIR, each
                                   with a NAME.expected dump of what was written
 
@@ -177,11 +180,43 @@ def meshio_write_exodus(outdir):
     emit("meshio", mesh.points, meshio_cells(mesh), path + ".expected")
 
 
+CGNS_TYPES = {2: "vertex", 3: "line2", 4: "line3", 5: "tri3", 6: "tri6", 7: "quad4", 9: "quad9",
+              10: "tet4", 11: "tet10", 12: "pyramid5", 14: "wedge6", 17: "hex8"}
+
+
+def dump_cgns_h5(path):
+    """Reads the HDF5 nodes directly (no libcgns): CGNS SIDS node order is VTK's for tet10 and
+    Gmsh's for the wedge, i.e. the dump's "meshio" order."""
+    import h5py
+    with h5py.File(path, "r") as f:
+        base = [f[k] for k in f if f[k].attrs.get("label", b"") == b"CGNSBase_t"][0]
+        zone = [base[k] for k in base if base[k].attrs.get("label", b"") == b"Zone_t"][0]
+        grid = zone["GridCoordinates"]
+        xyz = [grid[c][" data"][()] for c in ("CoordinateX", "CoordinateY", "CoordinateZ")]
+        points = list(zip(*xyz))
+        sections = [zone[k] for k in zone if zone[k].attrs.get("label", b"") == b"Elements_t"]
+        sections.sort(key=lambda e: int(e["ElementRange"][" data"][0]))
+        cells = []
+        for sec in sections:
+            name = CGNS_TYPES[int(sec[" data"][0])]
+            region = int(sec.name.split("/")[-1].split("_")[1])
+            conn = sec["ElementConnectivity"][" data"][()]
+            n = len(conn) // (int(sec["ElementRange"][" data"][1]) -
+                              int(sec["ElementRange"][" data"][0]) + 1)
+            for k in range(0, len(conn), n):
+                cells.append((name, region, [int(v) - 1 for v in conn[k:k + n]]))
+    emit("meshio", points, cells, path + ".cgns-h5.dump")
+
+
 if __name__ == "__main__":
     if len(sys.argv) < 3 or sys.argv[1] not in ("gmsh", "meshio", "meshio-write",
-                                                "meshio-write-ugrid", "meshio-write-exodus"):
+                                                "meshio-write-ugrid", "meshio-write-exodus",
+                                                "cgns-h5"):
         sys.exit(__doc__)
-    if sys.argv[1] == "meshio-write-exodus":
+    if sys.argv[1] == "cgns-h5":
+        for f in sys.argv[2:]:
+            dump_cgns_h5(f)
+    elif sys.argv[1] == "meshio-write-exodus":
         meshio_write_exodus(sys.argv[2])
     elif sys.argv[1] == "meshio-write-ugrid":
         meshio_write_ugrid(sys.argv[2])

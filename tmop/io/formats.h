@@ -43,6 +43,11 @@ void read_exodus(const std::string& path, Mesh* mesh);
 void write_exodus(const std::string& path, const Mesh& mesh);
 void check_exodus_writable(const Mesh& mesh);
 
+// CGNS .cgns through libcgns (cgns.cc), by path like Exodus; TMOP_WITH_CGNS.
+void read_cgns(const std::string& path, Mesh* mesh);
+void write_cgns(const std::string& path, const Mesh& mesh);
+void check_cgns_writable(const Mesh& mesh);
+
 // repair (null: strict) makes the surface readers drop faces with a repeated corner and split
 // faces of more than 4 corners into triangle fans, counting both (mesh_io.h, SurfaceRepair).
 void read_stl(const std::string& path, const std::string& data, Mesh* mesh,

@@ -31,13 +31,13 @@ bool is_openmesh_ext(const std::string& ext) {
   return ext == "obj" || ext == "off" || ext == "ply";
 }
 
-const char* kKnown = "known: .msh .vtk .vtu .mesh .ugrid .exo .e .obj .off .ply .stl";
+const char* kKnown = "known: .msh .vtk .vtu .mesh .ugrid .exo .e .cgns .obj .off .ply .stl";
 
 bool is_exodus_ext(const std::string& ext) { return ext == "exo" || ext == "e"; }
 
 bool is_known_ext(const std::string& ext) {
   return ext == "msh" || ext == "vtk" || ext == "vtu" || ext == "mesh" || ext == "stl" ||
-         ext == "ugrid" || is_exodus_ext(ext) || is_openmesh_ext(ext);
+         ext == "ugrid" || ext == "cgns" || is_exodus_ext(ext) || is_openmesh_ext(ext);
 }
 
 }  // namespace
@@ -87,9 +87,12 @@ Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair) {
     if (!is_known_ext(ext))
       return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
                              ")");
-    if (is_exodus_ext(ext)) {
-      // libexodusii reads the file by its name.
-      io::read_exodus(path, mesh);
+    if (is_exodus_ext(ext) || ext == "cgns") {
+      // libexodusii and libcgns read the file by its name.
+      if (ext == "cgns")
+        io::read_cgns(path, mesh);
+      else
+        io::read_exodus(path, mesh);
       io::finish_read(mesh);
       return Status::Ok();
     }
@@ -148,6 +151,7 @@ void check_writable_or_throw(const std::string& path, const Mesh& mesh,
     if (ext == "mesh") io::check_medit_writable(mesh);
     if (ext == "ugrid") io::check_ugrid_writable(path, mesh);
     if (is_exodus_ext(ext)) io::check_exodus_writable(mesh);
+    if (ext == "cgns") io::check_cgns_writable(mesh);
     if (ext == "vtk") io::check_vtk_writable(mesh);
     if (ext == "stl") io::check_stl_writable(mesh, options);
     if (is_openmesh_ext(ext)) io::check_openmesh_writable(ext, mesh);
@@ -201,8 +205,12 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
       tmp.commit();
       return Status::Ok();
     }
-    if (is_exodus_ext(ext)) {
-      io::write_exodus(path, mesh);  // atomically, through its own temporary file
+    if (is_exodus_ext(ext) || ext == "cgns") {
+      // Atomically, through their own temporary files.
+      if (ext == "cgns")
+        io::write_cgns(path, mesh);
+      else
+        io::write_exodus(path, mesh);
       return Status::Ok();
     }
     std::string bytes;

@@ -12,6 +12,8 @@
 //                         (the name picks the encoding; WriteOptions::binary is not used)
 //   .exo .e               Exodus II through libexodusii, element blocks as regions (only when
 //                         tmop was built with the library; otherwise a "built without" error)
+//   .cgns                 CGNS through libcgns (the same proviso): unstructured zones, element
+//                         sections as regions
 //   .obj .off .ply        surface formats (tri3 / quad4 cells): read by tmop, written through
 //                         OpenMesh, which writes coordinates as float32
 //   .stl                  ASCII and binary STL (tri3 cells; binary holds float32)
