@@ -45,7 +45,7 @@
 #include "tools/parse_flags.h"
 #include "tools/print_error.h"
 
-DEFINE_string(input, "", "Input mesh (.msh .vtk .vtu .mesh .obj .off .ply .stl).");
+DEFINE_string(input, "", "Input mesh (.msh .vtk .vtu .mesh .ugrid .exo .e .cgns .obj .off .ply .stl).");
 DEFINE_string(output, "", "Output mesh; format by extension. Written only on success.");
 DEFINE_string(recipe, "auto",
               "auto: untangle if anything is inverted, then improve shape; "

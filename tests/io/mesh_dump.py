@@ -4,6 +4,15 @@
   mesh_dump.py gmsh FILE...       dump each FILE as read by the Gmsh API (gmsh.open) into
                                   FILE.gmsh.dump
   mesh_dump.py meshio FILE...     dump each FILE as read by meshio into FILE.meshio.dump
+  mesh_dump.py meshio-write-ugrid DIR
+                                  write one UGRID mesh per encoding (ASCII, b8, lb8, r8, lr8)
+                                  with meshio into DIR, each with a NAME.expected dump
+  mesh_dump.py meshio-write-exodus DIR
+                                  write a.exo with meshio (every type both know) into DIR,
+                                  with a.exo.expected
+  mesh_dump.py cgns-h5 FILE...    dump each CGNS/HDF5 FILE as read node by node with h5py (the
+                                  SIDS layout: first base, first zone, its Elements_t nodes)
+                                  into FILE.cgns-h5.dump
   mesh_dump.py meshio-write DIR   write test meshes with meshio in every format into DIR, each
                                   with a NAME.expected dump of what was written
 
@@ -64,7 +73,7 @@ def meshio_cells(mesh):
     cells = []
     for i, block in enumerate(mesh.cells):
         region = None
-        for key in ("gmsh:physical", "medit:ref", "CellEntityIds"):
+        for key in ("gmsh:physical", "medit:ref", "ugrid:ref", "CellEntityIds"):
             if key in mesh.cell_data:
                 region = mesh.cell_data[key][i]
                 break
@@ -143,10 +152,75 @@ def meshio_write(outdir):
         emit("meshio", mesh.points, meshio_cells(mesh), path + ".expected")
 
 
+def meshio_write_ugrid(outdir):
+    import meshio
+    import numpy as np
+    types = ["triangle", "quad", "tetra", "pyramid", "wedge", "hexahedron"]
+    points, cells, _, _ = sample(types, False)
+    # meshio 5's UGRID writer fails on per-block cell data and writes surface ID 1 on every
+    # face without it; UGRID has no volume IDs (0 on reading).
+    mesh = meshio.Mesh(points, cells)
+    refs = [np.ones(2, dtype=int) if t in ("triangle", "quad") else np.zeros(2, dtype=int)
+            for t in types]
+    tagged = meshio.Mesh(points, cells, cell_data={"ugrid:ref": refs})
+    for name in ("a.ugrid", "a.b8.ugrid", "a.lb8.ugrid", "a.r8.ugrid", "a.lr8.ugrid"):
+        path = outdir + "/" + name
+        meshio.ugrid.write(path, mesh)
+        emit("meshio", mesh.points, meshio_cells(tagged), path + ".expected")
+
+
+def meshio_write_exodus(outdir):
+    import meshio
+    types = ["line", "triangle", "quad", "tetra", "pyramid", "wedge", "hexahedron",
+             "triangle6", "quad9", "tetra10"]
+    points, cells, _, _ = sample(types, True)
+    mesh = meshio.Mesh(points, cells)
+    path = outdir + "/a.exo"
+    meshio.exodus.write(path, mesh)
+    emit("meshio", mesh.points, meshio_cells(mesh), path + ".expected")
+
+
+CGNS_TYPES = {2: "vertex", 3: "line2", 4: "line3", 5: "tri3", 6: "tri6", 7: "quad4", 9: "quad9",
+              10: "tet4", 11: "tet10", 12: "pyramid5", 14: "wedge6", 17: "hex8"}
+
+
+def dump_cgns_h5(path):
+    """Reads the HDF5 nodes directly (no libcgns): CGNS SIDS node order is VTK's for tet10 and
+    Gmsh's for the wedge, i.e. the dump's "meshio" order."""
+    import h5py
+    with h5py.File(path, "r") as f:
+        base = [f[k] for k in f if f[k].attrs.get("label", b"") == b"CGNSBase_t"][0]
+        zone = [base[k] for k in base if base[k].attrs.get("label", b"") == b"Zone_t"][0]
+        grid = zone["GridCoordinates"]
+        xyz = [grid[c][" data"][()] for c in ("CoordinateX", "CoordinateY", "CoordinateZ")]
+        points = list(zip(*xyz))
+        sections = [zone[k] for k in zone if zone[k].attrs.get("label", b"") == b"Elements_t"]
+        sections.sort(key=lambda e: int(e["ElementRange"][" data"][0]))
+        cells = []
+        for sec in sections:
+            name = CGNS_TYPES[int(sec[" data"][0])]
+            region = int(sec.name.split("/")[-1].split("_")[1])
+            conn = sec["ElementConnectivity"][" data"][()]
+            n = len(conn) // (int(sec["ElementRange"][" data"][1]) -
+                              int(sec["ElementRange"][" data"][0]) + 1)
+            for k in range(0, len(conn), n):
+                cells.append((name, region, [int(v) - 1 for v in conn[k:k + n]]))
+    emit("meshio", points, cells, path + ".cgns-h5.dump")
+
+
 if __name__ == "__main__":
-    if len(sys.argv) < 3 or sys.argv[1] not in ("gmsh", "meshio", "meshio-write"):
+    if len(sys.argv) < 3 or sys.argv[1] not in ("gmsh", "meshio", "meshio-write",
+                                                "meshio-write-ugrid", "meshio-write-exodus",
+                                                "cgns-h5"):
         sys.exit(__doc__)
-    if sys.argv[1] == "meshio-write":
+    if sys.argv[1] == "cgns-h5":
+        for f in sys.argv[2:]:
+            dump_cgns_h5(f)
+    elif sys.argv[1] == "meshio-write-exodus":
+        meshio_write_exodus(sys.argv[2])
+    elif sys.argv[1] == "meshio-write-ugrid":
+        meshio_write_ugrid(sys.argv[2])
+    elif sys.argv[1] == "meshio-write":
         meshio_write(sys.argv[2])
     elif sys.argv[1] == "meshio":
         for f in sys.argv[2:]:

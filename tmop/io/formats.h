@@ -30,6 +30,24 @@ void read_medit(const std::string& path, const std::string& data, Mesh* mesh);
 void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out);
 void check_medit_writable(const Mesh& mesh);
 
+// AFLR3 .ugrid; the encoding comes from the name (NAME.ugrid ASCII, NAME.b8.ugrid, .lb8, .r8,
+// .lr8 binary: ugrid.cc), not from WriteOptions.
+void read_ugrid(const std::string& path, const std::string& data, Mesh* mesh);
+void write_ugrid(const std::string& path, const Mesh& mesh, std::string* out);
+void check_ugrid_writable(const std::string& path, const Mesh& mesh);
+
+// Exodus II .exo / .e through libexodusii (exodus.cc), which reads and writes by path: the
+// reader opens path itself, the writer writes path (mesh_io.cc passes a temporary name).
+// Without the library (TMOP_WITH_EXODUS unset) all three throw "... built without Exodus II".
+void read_exodus(const std::string& path, Mesh* mesh);
+void write_exodus(const std::string& path, const Mesh& mesh);
+void check_exodus_writable(const Mesh& mesh);
+
+// CGNS .cgns through libcgns (cgns.cc), by path like Exodus; TMOP_WITH_CGNS.
+void read_cgns(const std::string& path, Mesh* mesh);
+void write_cgns(const std::string& path, const Mesh& mesh);
+void check_cgns_writable(const Mesh& mesh);
+
 // repair (null: strict) makes the surface readers drop faces with a repeated corner and split
 // faces of more than 4 corners into triangle fans, counting both (mesh_io.h, SurfaceRepair).
 void read_stl(const std::string& path, const std::string& data, Mesh* mesh,

@@ -31,7 +31,14 @@ bool is_openmesh_ext(const std::string& ext) {
   return ext == "obj" || ext == "off" || ext == "ply";
 }
 
-const char* kKnown = "known: .msh .vtk .vtu .mesh .obj .off .ply .stl";
+const char* kKnown = "known: .msh .vtk .vtu .mesh .ugrid .exo .e .cgns .obj .off .ply .stl";
+
+bool is_exodus_ext(const std::string& ext) { return ext == "exo" || ext == "e"; }
+
+bool is_known_ext(const std::string& ext) {
+  return ext == "msh" || ext == "vtk" || ext == "vtu" || ext == "mesh" || ext == "stl" ||
+         ext == "ugrid" || ext == "cgns" || is_exodus_ext(ext) || is_openmesh_ext(ext);
+}
 
 }  // namespace
 
@@ -77,15 +84,24 @@ Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair) {
   try {
     // A directory (or a device, a FIFO) is refused as such, whatever its name ends with.
     io::check_regular_file(path);
-    if (ext != "msh" && ext != "vtk" && ext != "vtu" && ext != "mesh" && ext != "stl" &&
-        !is_openmesh_ext(ext))
+    if (!is_known_ext(ext))
       return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
                              ")");
+    if (is_exodus_ext(ext) || ext == "cgns") {
+      // libexodusii and libcgns read the file by its name.
+      if (ext == "cgns")
+        io::read_cgns(path, mesh);
+      else
+        io::read_exodus(path, mesh);
+      io::finish_read(mesh);
+      return Status::Ok();
+    }
     const std::string data = io::read_file(path, ext);
     if (ext == "msh") io::read_msh(path, data, mesh);
     if (ext == "vtk") io::read_vtk(path, data, mesh);
     if (ext == "vtu") io::read_vtu(path, data, mesh);
     if (ext == "mesh") io::read_medit(path, data, mesh);
+    if (ext == "ugrid") io::read_ugrid(path, data, mesh);
     if (ext == "stl") io::read_stl(path, data, mesh, repair);
     if (is_openmesh_ext(ext)) io::read_surface(path, ext, data, mesh, repair);
     io::finish_read(mesh);
@@ -105,8 +121,7 @@ namespace {
 void check_writable_or_throw(const std::string& path, const Mesh& mesh,
                              const WriteOptions& options) {
   const std::string ext = extension(path);
-  if (ext != "msh" && ext != "vtk" && ext != "vtu" && ext != "mesh" && ext != "stl" &&
-      !is_openmesh_ext(ext))
+  if (!is_known_ext(ext))
     throw Error(path + ": unknown mesh file extension '." + ext + "' (" + kKnown + ")");
   if (mesh.space_dim != 2 && mesh.space_dim != 3)
     throw Error(path + ": cannot write a mesh with space_dim " + std::to_string(mesh.space_dim));
@@ -134,6 +149,9 @@ void check_writable_or_throw(const std::string& path, const Mesh& mesh,
                 " (22 and 41 are supported)");
   try {
     if (ext == "mesh") io::check_medit_writable(mesh);
+    if (ext == "ugrid") io::check_ugrid_writable(path, mesh);
+    if (is_exodus_ext(ext)) io::check_exodus_writable(mesh);
+    if (ext == "cgns") io::check_cgns_writable(mesh);
     if (ext == "vtk") io::check_vtk_writable(mesh);
     if (ext == "stl") io::check_stl_writable(mesh, options);
     if (is_openmesh_ext(ext)) io::check_openmesh_writable(ext, mesh);
@@ -187,6 +205,14 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
       tmp.commit();
       return Status::Ok();
     }
+    if (is_exodus_ext(ext) || ext == "cgns") {
+      // Atomically, through their own temporary files.
+      if (ext == "cgns")
+        io::write_cgns(path, mesh);
+      else
+        io::write_exodus(path, mesh);
+      return Status::Ok();
+    }
     std::string bytes;
     try {
       if (ext == "msh")
@@ -197,6 +223,8 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
         io::write_vtu(mesh, options, &bytes);
       else if (ext == "mesh")
         io::write_medit(mesh, options, &bytes);
+      else if (ext == "ugrid")
+        io::write_ugrid(path, mesh, &bytes);
       else
         io::write_stl(mesh, options, &bytes);
     } catch (const Error& e) {

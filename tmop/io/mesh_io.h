@@ -7,6 +7,13 @@
 //   .vtu                  VTK XML UnstructuredGrid (read: ascii, base64 inline, raw appended,
 //                         zlib-compressed; write: ascii or base64 inline)
 //   .mesh                 Medit / INRIA ASCII
+//   .ugrid                AFLR3 UGRID: NAME.ugrid ASCII, NAME.b8.ugrid / NAME.lb8.ugrid C binary
+//                         big / little-endian, NAME.r8.ugrid / NAME.lr8.ugrid Fortran records
+//                         (the name picks the encoding; WriteOptions::binary is not used)
+//   .exo .e               Exodus II through libexodusii, element blocks as regions (only when
+//                         tmop was built with the library; otherwise a "built without" error)
+//   .cgns                 CGNS through libcgns (the same proviso): unstructured zones, element
+//                         sections as regions
 //   .obj .off .ply        surface formats (tri3 / quad4 cells): read by tmop, written through
 //                         OpenMesh, which writes coordinates as float32
 //   .stl                  ASCII and binary STL (tri3 cells; binary holds float32)

@@ -1,0 +1,267 @@
+// tmop/io/cgns.cc
+// CGNS (.cgns) through libcgns (Debian's 3.4, HDF5 files). Only built with the library (CMake
+// finds cgnslib.h and libcgns: TMOP_WITH_CGNS); without it reading and writing fail with
+// "FILE: tmop was built without CGNS support".
+//
+// Read: the first base; every unstructured zone of it, merged (vertices of zone k follow those
+// of zone k - 1; zones are not glued at shared points); structured zones are refused. Every
+// element section becomes cells; MIXED sections (the CGNS 3.x layout: type, nodes, type, ...)
+// are split per element. Regions: a section named "Region_R_..." (tmop's own) gives region R,
+// any other section its 1-based section number. Boundary conditions and flow solutions are
+// not read.
+// Write: one base "Base", one zone "Zone1", one section per (region, type), named
+// "Region_R_TYPE", element numbers 1..N in section order; coordinates as RealDouble.
+//
+// Types and node order (CGNS SIDS, "Unstructured Grid Element Numbering Conventions"): NODE,
+// BAR_2, BAR_3, TRI_3, TRI_6, QUAD_4, QUAD_9, TETRA_4, PYRA_5, PENTA_6, HEXA_8 in Gmsh's order;
+// TETRA_10 has its mid-edge nodes 9 and 10 (edges 2-4, 3-4) in VTK's order (node_order.h);
+// HEXA_27 is refused (its own face-node order, not checked here).
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "tmop/io/atomic_file.h"
+#include "tmop/io/formats.h"
+#include "tmop/io/node_order.h"
+
+#ifdef TMOP_WITH_CGNS
+#include <cgnslib.h>
+#include <sys/stat.h>
+#endif
+
+namespace tmop {
+namespace io {
+
+#ifndef TMOP_WITH_CGNS
+
+void read_cgns(const std::string& path, Mesh*) {
+  throw Error(path + ": tmop was built without CGNS support (install libcgns-dev and reconfigure)");
+}
+void write_cgns(const std::string& path, const Mesh&) {
+  throw Error(path + ": tmop was built without CGNS support (install libcgns-dev and reconfigure)");
+}
+void check_cgns_writable(const Mesh&) {
+  throw Error("tmop was built without CGNS support (install libcgns-dev and reconfigure)");
+}
+
+#else
+
+namespace {
+
+struct CgType {
+  CGNS_ENUMT(ElementType_t) cg;
+  CellType type;
+};
+const CgType kTypes[] = {
+    {CGNS_ENUMV(NODE), CellType::kVertex},    {CGNS_ENUMV(BAR_2), CellType::kLine2},
+    {CGNS_ENUMV(BAR_3), CellType::kLine3},    {CGNS_ENUMV(TRI_3), CellType::kTri3},
+    {CGNS_ENUMV(TRI_6), CellType::kTri6},     {CGNS_ENUMV(QUAD_4), CellType::kQuad4},
+    {CGNS_ENUMV(QUAD_9), CellType::kQuad9},   {CGNS_ENUMV(TETRA_4), CellType::kTet4},
+    {CGNS_ENUMV(TETRA_10), CellType::kTet10}, {CGNS_ENUMV(PYRA_5), CellType::kPyramid5},
+    {CGNS_ENUMV(PENTA_6), CellType::kWedge6}, {CGNS_ENUMV(HEXA_8), CellType::kHex8},
+};
+
+bool from_cgns(int cg, CellType* t) {
+  for (const CgType& e : kTypes)
+    if (static_cast<int>(e.cg) == cg) return *t = e.type, true;
+  return false;
+}
+bool to_cgns(CellType t, CGNS_ENUMT(ElementType_t) * cg) {
+  for (const CgType& e : kTypes)
+    if (e.type == t) return *cg = e.cg, true;
+  return false;
+}
+
+// CGNS node i = Gmsh node perm(i); identity except tet10 (a swap: its own inverse).
+int cg_index(CellType t, int i) { return t == CellType::kTet10 ? gmsh_index_of_vtk_node(t)[i] : i; }
+
+struct CgFile {
+  int fn = -1;
+  ~CgFile() {
+    if (fn >= 0) cg_close(fn);
+  }
+};
+
+[[noreturn]] void cg_fail(const std::string& path, const std::string& what) {
+  std::string msg = cg_get_error();
+  std::replace(msg.begin(), msg.end(), '\n', ' ');
+  throw Error(path + ": " + what + (msg.empty() ? "" : " (" + msg + ")"));
+}
+
+int region_of(const char* name, int section) {
+  int r = 0;
+  char rest[64];
+  if (std::sscanf(name, "Region_%d_%63s", &r, rest) == 2) return r;
+  return section;
+}
+
+// Adds the cells of section S of zone Z (vertices offset by base, nv of them).
+void read_section(const std::string& path, int fn, int Z, int S, cgsize_t base, cgsize_t nv,
+                  std::uint64_t file_size, Mesh* mesh) {
+  char name[64] = {0};
+  CGNS_ENUMT(ElementType_t) type;
+  cgsize_t start = 0, end = 0;
+  int nbndry = 0, parent = 0;
+  if (cg_section_read(fn, 1, Z, S, name, &type, &start, &end, &nbndry, &parent) != CG_OK)
+    cg_fail(path, "cannot read element section " + std::to_string(S));
+  cgsize_t size = 0;
+  if (cg_ElementDataSize(fn, 1, Z, S, &size) != CG_OK || size < 0 ||
+      static_cast<std::uint64_t>(size) > file_size)
+    cg_fail(path, "bad size of element section " + std::to_string(S));
+  std::vector<cgsize_t> data(static_cast<std::size_t>(size));
+  if (size > 0 && cg_elements_read(fn, 1, Z, S, data.data(), nullptr) != CG_OK)
+    cg_fail(path, "cannot read element section " + std::to_string(S));
+  const int region = region_of(name, S);
+  const bool mixed = type == CGNS_ENUMV(MIXED);
+  std::int32_t nodes[kMaxCellNodes];
+  for (std::size_t p = 0; p < data.size();) {
+    CellType t;
+    const int cg = mixed ? static_cast<int>(data[p++]) : static_cast<int>(type);
+    if (!from_cgns(cg, &t))
+      throw Error(path + ": section '" + name + "': unsupported CGNS element type " +
+                  std::to_string(cg));
+    const int nn = cell_num_nodes(t);
+    if (p + nn > data.size()) throw Error(path + ": section '" + name + "' is truncated");
+    for (int i = 0; i < nn; ++i) {
+      const cgsize_t v = data[p + cg_index(t, i)];
+      if (v < 1 || v > nv)
+        throw Error(path + ": section '" + name + "': node " + std::to_string(v) +
+                    " is out of range 1.." + std::to_string(nv));
+      nodes[i] = static_cast<std::int32_t>(base + v - 1);
+    }
+    p += nn;
+    mesh->add_cell(t, nodes, region, 0);
+  }
+}
+
+void read_zone(const std::string& path, int fn, int Z, std::uint64_t file_size, Mesh* mesh) {
+  CGNS_ENUMT(ZoneType_t) zt;
+  if (cg_zone_type(fn, 1, Z, &zt) != CG_OK) cg_fail(path, "cannot read zone " + std::to_string(Z));
+  if (zt != CGNS_ENUMV(Unstructured))
+    throw Error(path + ": zone " + std::to_string(Z) + " is structured (tmop reads unstructured)");
+  char name[64] = {0};
+  cgsize_t size[3] = {0, 0, 0};
+  if (cg_zone_read(fn, 1, Z, name, size) != CG_OK)
+    cg_fail(path, "cannot read zone " + std::to_string(Z));
+  const cgsize_t nv = size[0];
+  if (nv < 0 || static_cast<std::uint64_t>(nv) * 8 > file_size ||
+      mesh->coords.size() / 3 + static_cast<std::uint64_t>(nv) > 0x7fffffff)
+    throw Error(path + ": zone '" + std::string(name) + "' declares " + std::to_string(nv) +
+                " vertices, more than the file holds");
+  const cgsize_t base = static_cast<cgsize_t>(mesh->coords.size() / 3);
+  std::vector<double> xyz[3];
+  const char* names[3] = {"CoordinateX", "CoordinateY", "CoordinateZ"};
+  cgsize_t lo = 1, hi = nv;
+  for (int k = 0; k < 3; ++k) {
+    xyz[k].assign(static_cast<std::size_t>(nv), 0.0);
+    if (nv > 0 &&
+        cg_coord_read(fn, 1, Z, names[k], CGNS_ENUMV(RealDouble), &lo, &hi, xyz[k].data()) !=
+            CG_OK &&
+        k < 2)
+      cg_fail(path, std::string("cannot read ") + names[k]);
+  }
+  for (cgsize_t v = 0; v < nv; ++v)
+    for (int k = 0; k < 3; ++k) mesh->coords.push_back(xyz[k][static_cast<std::size_t>(v)]);
+  int ns = 0;
+  if (cg_nsections(fn, 1, Z, &ns) != CG_OK) cg_fail(path, "cannot count the element sections");
+  for (int S = 1; S <= ns; ++S) read_section(path, fn, Z, S, base, nv, file_size, mesh);
+}
+
+}  // namespace
+
+void read_cgns(const std::string& path, Mesh* mesh) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0) throw Error(path + ": cannot open the file");
+  CgFile f;
+  if (cg_open(path.c_str(), CG_MODE_READ, &f.fn) != CG_OK) {
+    f.fn = -1;
+    cg_fail(path, "not a readable CGNS file");
+  }
+  int nb = 0;
+  if (cg_nbases(f.fn, &nb) != CG_OK || nb < 1) throw Error(path + ": no CGNS base in the file");
+  int nz = 0;
+  if (cg_nzones(f.fn, 1, &nz) != CG_OK || nz < 1) throw Error(path + ": no zone in the first base");
+  mesh->space_dim = 3;
+  for (int Z = 1; Z <= nz; ++Z)
+    read_zone(path, f.fn, Z, static_cast<std::uint64_t>(st.st_size), mesh);
+}
+
+void check_cgns_writable(const Mesh& mesh) {
+  CGNS_ENUMT(ElementType_t) cg = CGNS_ENUMV(ElementTypeNull);
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    if (!to_cgns(mesh.cell_types[c], &cg))
+      throw Error(std::string("cannot write ") + cell_name(mesh.cell_types[c]) +
+                  " cells to CGNS (cell " + std::to_string(c) + " is the first)");
+}
+
+namespace {
+
+void write_sections(const std::string& path, int fn, int Z, const Mesh& mesh) {
+  // (region, type) in order of first appearance.
+  std::vector<std::pair<int, CellType> > keys;
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    const std::pair<int, CellType> k(mesh.cell_region[c], mesh.cell_types[c]);
+    if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
+  }
+  cgsize_t next = 1;
+  for (const auto& k : keys) {
+    const int nn = cell_num_nodes(k.second);
+    std::vector<cgsize_t> conn;
+    for (int c = 0; c < mesh.num_cells(); ++c) {
+      if (mesh.cell_region[c] != k.first || mesh.cell_types[c] != k.second) continue;
+      const std::size_t at = conn.size();
+      conn.resize(at + nn);
+      for (int i = 0; i < nn; ++i) conn[at + cg_index(k.second, i)] = mesh.cell(c)[i] + 1;
+    }
+    const cgsize_t count = static_cast<cgsize_t>(conn.size() / nn);
+    CGNS_ENUMT(ElementType_t) cg = CGNS_ENUMV(ElementTypeNull);
+    to_cgns(k.second, &cg);
+    const std::string name = "Region_" + std::to_string(k.first) + "_" + cell_name(k.second);
+    int S = 0;
+    if (cg_section_write(fn, 1, Z, name.c_str(), cg, next, next + count - 1, 0, conn.data(), &S) !=
+        CG_OK)
+      cg_fail(path, "cannot write section " + name);
+    next += count;
+  }
+}
+
+}  // namespace
+
+void write_cgns(const std::string& path, const Mesh& mesh) {
+  check_cgns_writable(mesh);
+  TempFile tmp(path, "cgns");
+  tmp.close_fd();
+  {
+    CgFile f;
+    if (cg_open(tmp.name().c_str(), CG_MODE_WRITE, &f.fn) != CG_OK) {
+      f.fn = -1;
+      cg_fail(path, "cannot create the CGNS file");
+    }
+    int B = 0, Z = 0;
+    const int top = std::max(1, mesh.dim());
+    if (cg_base_write(f.fn, "Base", top, 3, &B) != CG_OK) cg_fail(path, "cannot write");
+    cgsize_t size[3] = {mesh.num_vertices(), 0, 0};
+    for (int c = 0; c < mesh.num_cells(); ++c) size[1] += cell_dim(mesh.cell_types[c]) == top;
+    if (cg_zone_write(f.fn, B, "Zone1", size, CGNS_ENUMV(Unstructured), &Z) != CG_OK)
+      cg_fail(path, "cannot write the zone");
+    const char* names[3] = {"CoordinateX", "CoordinateY", "CoordinateZ"};
+    std::vector<double> x(static_cast<std::size_t>(mesh.num_vertices()));
+    for (int k = 0; k < 3; ++k) {
+      for (int v = 0; v < mesh.num_vertices(); ++v) x[v] = coord(mesh, v, k);
+      int C = 0;
+      if (cg_coord_write(f.fn, B, Z, CGNS_ENUMV(RealDouble), names[k], x.data(), &C) != CG_OK)
+        cg_fail(path, std::string("cannot write ") + names[k]);
+    }
+    write_sections(path, f.fn, Z, mesh);
+    const int fn = f.fn;
+    f.fn = -1;
+    if (cg_close(fn) != CG_OK) cg_fail(path, "cannot finish the CGNS file");
+  }
+  tmp.commit();
+}
+
+#endif  // TMOP_WITH_CGNS
+
+}  // namespace io
+}  // namespace tmop
