@@ -114,6 +114,9 @@ DEFINE_double(function_tolerance, 1e-5,
 DEFINE_int32(threads, 0, "Threads for evaluation and linear algebra (0 = all cores).");
 DEFINE_string(report, "", "Write a JSON report of the run to this file.");
 DEFINE_bool(binary, false, "Write binary output where the format has a binary form.");
+DEFINE_string(msh_version, "4.1",
+              "Gmsh file-format version of a .msh output: 4.1 (what current Gmsh writes) or 2.2 "
+              "(for old readers). Ignored for other formats.");
 DEFINE_string(boundary, "fixed",
               "Boundary vertices: fixed, or slide (on their curves and surfaces; corners and "
               "feature edges are kept). Surface meshes always slide on their surface.");
@@ -278,6 +281,8 @@ int main(int argc, char** argv) {
     return fail(2, "--guarantee must be all, worst or off, not '" + FLAGS_guarantee + "'");
   if (FLAGS_orientation != "auto" && FLAGS_orientation != "gmsh" && FLAGS_orientation != "opposite")
     return fail(2, "--orientation must be auto, gmsh or opposite, not '" + FLAGS_orientation + "'");
+  if (FLAGS_msh_version != "4.1" && FLAGS_msh_version != "2.2")
+    return fail(2, "--msh_version must be 2.2 or 4.1, not '" + FLAGS_msh_version + "'");
   if (FLAGS_boundary != "fixed" && FLAGS_boundary != "slide")
     return fail(2, "--boundary must be fixed or slide, not '" + FLAGS_boundary + "'");
   // Recipes surface and sliver slide by default (their definitions); the others keep the
@@ -369,6 +374,7 @@ int main(int argc, char** argv) {
   // Node movement changes neither cell types nor connectivity, which is all the check needs.
   WriteOptions wopt;
   wopt.binary = FLAGS_binary;
+  wopt.msh_version = FLAGS_msh_version == "2.2" ? 22 : 41;
   s = check_writable(FLAGS_output, mesh, wopt);
   if (!s.ok()) return fail(2, s.message());
   // The recipe must fit the mesh and a --geometry must be well formed, near the mesh and used:

@@ -30,6 +30,8 @@ DEFINE_string(output, "",
               "Also write the mesh with the per-cell measures as cell fields (inverted, certified, "
               "mean_ratio, scaled_jacobian, condition_number, ...). Use .vtu (or .vtk) to keep "
               "the fields. Written atomically.");
+DEFINE_bool(binary, false, "Write --output in binary where the format has a binary form.");
+DEFINE_string(msh_version, "4.1", "Gmsh version of a .msh --output: 4.1 or 2.2.");
 DEFINE_string(svg, "",
               "Also write an SVG picture: 2D meshes coloured by quality with a colour bar; 3D "
               "meshes as histograms and a max-vs-min dihedral angle scatter plot.");
@@ -72,6 +74,8 @@ int main(int argc, char** argv) {
     return fail(kUsageError,
                 std::string("unexpected argument '") + argv[1] + "' (flags only; see --help)");
   if (FLAGS_input.empty()) return fail(kUsageError, "--input is required (see --help)");
+  if (FLAGS_msh_version != "4.1" && FLAGS_msh_version != "2.2")
+    return fail(kUsageError, "--msh_version must be 2.2 or 4.1, not '" + FLAGS_msh_version + "'");
   tmop::QualityOptions options;
   if (!tmop::sample_rule_from_name(FLAGS_sample_rule, &options.sample_rule))
     return fail(kUsageError, "unknown --sample_rule '" + FLAGS_sample_rule + "'");
@@ -94,7 +98,10 @@ int main(int argc, char** argv) {
   }
   if (!FLAGS_output.empty()) {
     tmop::add_quality_fields(report, &mesh);
-    const tmop::Status written = tmop::write_mesh(FLAGS_output, mesh);
+    tmop::WriteOptions wopt;
+    wopt.binary = FLAGS_binary;
+    wopt.msh_version = FLAGS_msh_version == "2.2" ? 22 : 41;
+    const tmop::Status written = tmop::write_mesh(FLAGS_output, mesh, wopt);
     if (!written.ok()) return fail(kOutputError, written.message());
   }
   return 0;

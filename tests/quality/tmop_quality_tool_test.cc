@@ -64,6 +64,25 @@ TEST_F(TmopQualityTool, BadInputAndUsageErrorsExitWithTwo) {
   EXPECT_EQ(exit_code(kTool + " --help > /dev/null"), 0);
 }
 
+// --output honours --binary and --msh_version like tmop_optimize; a bad version exits 2.
+TEST_F(TmopQualityTool, MshVersionAndBinaryChooseTheOutputForm) {
+  const std::string msh = dir_ + "tool_out.msh";
+  EXPECT_EQ(exit_code(kTool + " --input=" + input_ + " --output=" + msh +
+                      " --msh_version=3 > /dev/null 2>&1"),
+            2);
+  ASSERT_EQ(exit_code(kTool + " --input=" + input_ + " --output=" + msh +
+                      " --msh_version=2.2 --binary > /dev/null"),
+            0);
+  std::ifstream in(msh, std::ios::binary);
+  std::string first, second;
+  std::getline(in, first);
+  std::getline(in, second);
+  EXPECT_EQ(second, "2.2 1 8");
+  Mesh out;
+  EXPECT_TRUE(read_mesh(msh, &out).ok());
+  EXPECT_EQ(out.num_cells(), testing_meshes::tet_block(2, 0.2).num_cells());
+}
+
 std::string slurp(const std::string& path) {
   std::ifstream in(path);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

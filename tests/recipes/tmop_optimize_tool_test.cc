@@ -69,6 +69,37 @@ TEST_F(TmopOptimizeTool, UsageErrorsExitWithTwoAndOneLine) {
   EXPECT_EQ(run(io, &err), 0) << err;
 }
 
+// --msh_version and --binary choose the .msh output's version and encoding; a version other
+// than 2.2 or 4.1 is a usage error (exit 2, one line) said before any work.
+TEST_F(TmopOptimizeTool, MshVersionAndBinaryChooseTheOutputForm) {
+  const std::string in = "--input=" + dir_ + "/grid.msh ";
+  for (const std::string& bad : {std::string("4"), std::string("2.1"), std::string("")}) {
+    std::string err;
+    EXPECT_EQ(run(in + "--output=" + dir_ + "/o.msh --msh_version=" + bad, &err), 2) << err;
+    EXPECT_EQ(lines(err), 1) << err;
+  }
+  const struct {
+    std::string flags, header;
+  } cases[] = {{"--msh_version=2.2", "2.2 0 8"},
+               {"--msh_version=2.2 --binary", "2.2 1 8"},
+               {"--msh_version=4.1 --binary", "4.1 1 8"},
+               {"", "4.1 0 8"}};
+  for (const auto& c : cases) {
+    std::string err;
+    const std::string out = dir_ + "/o.msh";
+    ASSERT_EQ(run(in + "--output=" + out + " " + c.flags, &err), 0) << c.flags << ": " << err;
+    std::ifstream f(out, std::ios::binary);
+    std::string first, second;
+    std::getline(f, first);
+    std::getline(f, second);
+    EXPECT_EQ(first, "$MeshFormat") << c.flags;
+    EXPECT_EQ(second, c.header) << c.flags;
+    Mesh m;
+    EXPECT_TRUE(read_mesh(out, &m).ok()) << c.flags;
+    EXPECT_EQ(m.num_cells(), testing_grid::grid(CellType::kTri3, 4).num_cells()) << c.flags;
+  }
+}
+
 // A bad input is reported exactly as read_mesh locates it, without the program name (tmop_quality
 // prints the same line for the same file).
 TEST_F(TmopOptimizeTool, InputErrorsAreExactlyFileLineWhat) {
