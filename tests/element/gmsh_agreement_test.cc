@@ -68,7 +68,8 @@ TEST(GmshAgreement, ReferenceNodesEqualGmsh) {
 }
 
 // In gmsh's straight-sided meshes every mid-edge node is the average of the corners of the table
-// edge with the same index, every hex27 face node the average of the table facet's corners, and
+// edge with the same index, every face node (hex27, wedge18) the average of the table facet's
+// corners, and
 // det J is positive at the centroid (gmsh's orientation is tmop's).
 TEST(GmshAgreement, MeshNodesFollowTheTable) {
   if (Records().empty()) GTEST_SKIP() << "gmsh Python module not available";
@@ -94,8 +95,12 @@ TEST(GmshAgreement, MeshNodesFollowTheTable) {
       const int corners[4] = {0, 1, 2, 3};
       expect_average(8, corners, 4, "centre");
     }
+    for (int f = 0; f < info.num_facets; ++f) {
+      if (facet_node(info, f) >= 0)
+        expect_average(facet_node(info, f), info.facets[f].corners, info.facets[f].num_corners,
+                       "face");
+    }
     if (t == CellType::kHex27) {
-      for (int f = 0; f < 6; ++f) expect_average(20 + f, info.facets[f].corners, 4, "face");
       const int corners[8] = {0, 1, 2, 3, 4, 5, 6, 7};
       expect_average(26, corners, 8, "centre");
     }
@@ -113,7 +118,8 @@ TEST(GmshAgreement, MeshNodesFollowTheTable) {
     }
     ++checked[info.name];
   }
-  for (const char* name : {"tri6", "quad9", "tet10", "hex27", "wedge6", "tet4", "hex8", "pyramid5"})
+  for (const char* name : {"tri6", "quad9", "tet10", "hex27", "wedge6", "tet4", "hex8", "pyramid5",
+                           "quad8", "hex20", "wedge15", "wedge18"})
     EXPECT_GT(checked[name], 0) << "gmsh produced no " << name;
 }
 

@@ -22,7 +22,7 @@ def dump_elements(limit=6):
     types, _, nodes = gmsh.model.mesh.getElements()
     for t, ns in zip(types, nodes):
         _, _, _, nn, _, _ = gmsh.model.mesh.getElementProperties(t)
-        if t not in (9, 10, 11, 12, 6, 7, 5, 3, 4, 2):
+        if t not in (9, 10, 11, 12, 6, 7, 5, 3, 4, 2, 13, 16, 17, 18):
             continue
         for e in range(min(limit, len(ns) // nn)):
             xs = []
@@ -33,7 +33,7 @@ def dump_elements(limit=6):
 
 gmsh.initialize()
 gmsh.option.setNumber("General.Terminal", 0)
-for t in [15, 1, 8, 2, 3, 4, 5, 6, 7, 9, 10, 11, 12]:
+for t in [15, 1, 8, 2, 3, 4, 5, 6, 7, 9, 10, 11, 12, 16, 17, 18, 13]:
     _, dim, _, nn, c, _ = gmsh.model.mesh.getElementProperties(t)
     print("ref", t, nn, " ".join(repr(float(x)) for x in pad(c, dim)))
 
@@ -77,7 +77,32 @@ gmsh.model.occ.extrude([(2, 1)], 0, 0, 0.5, [2], recombine=True)
 gmsh.model.occ.synchronize()
 gmsh.model.mesh.generate(3)
 dump_elements()
+# The same wedges at order 2: complete (wedge18, what `gmsh -order 2` writes) and incomplete
+# (wedge15).
+for incomplete in (0, 1):
+    gmsh.option.setNumber("Mesh.SecondOrderIncomplete", incomplete)
+    gmsh.model.mesh.setOrder(2)
+    dump_elements()
+    gmsh.model.mesh.setOrder(1)
+gmsh.option.setNumber("Mesh.SecondOrderIncomplete", 0)
 gmsh.model.remove()
+# Serendipity quad8 / hex20: second order, incomplete, on a recombined square / transfinite cube.
+gmsh.option.setNumber("Mesh.SecondOrderIncomplete", 1)
+gmsh.model.add("serendipity")
+gmsh.model.occ.addBox(0, 0, 0, 1, 1.5, 2)
+gmsh.model.occ.synchronize()
+for c in gmsh.model.getEntities(1):
+    gmsh.model.mesh.setTransfiniteCurve(c[1], 3)
+for s in gmsh.model.getEntities(2):
+    gmsh.model.mesh.setTransfiniteSurface(s[1])
+    gmsh.model.mesh.setRecombine(2, s[1])
+gmsh.model.mesh.setTransfiniteVolume(1)
+gmsh.model.mesh.setRecombine(3, 1)
+gmsh.model.mesh.generate(3)
+gmsh.model.mesh.setOrder(2)
+dump_elements()
+gmsh.model.remove()
+gmsh.option.setNumber("Mesh.SecondOrderIncomplete", 0)
 # A hex box glued to a tet box: gmsh puts pyramids on the shared quad face.
 gmsh.model.add("pyramids")
 gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1)

@@ -4,16 +4,20 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
+#include <vector>
 
 namespace tmop {
 namespace {
 
 constexpr CellType kAllTypes[] = {
-    CellType::kVertex, CellType::kLine2, CellType::kLine3,  CellType::kTri3,     CellType::kQuad4,
-    CellType::kTet4,   CellType::kHex8,  CellType::kWedge6, CellType::kPyramid5, CellType::kTri6,
-    CellType::kQuad9,  CellType::kTet10, CellType::kHex27};
+    CellType::kVertex,  CellType::kLine2,  CellType::kLine3,  CellType::kTri3,     CellType::kQuad4,
+    CellType::kTet4,    CellType::kHex8,   CellType::kWedge6, CellType::kPyramid5, CellType::kTri6,
+    CellType::kQuad9,   CellType::kTet10,  CellType::kHex27,  CellType::kQuad8,    CellType::kHex20,
+    CellType::kWedge15, CellType::kWedge18};
 
 // A random point strictly inside the reference element (Gmsh's, see shape.h).
 void RandomInterior(CellType type, std::mt19937* rng, double* xi) {
@@ -138,7 +142,8 @@ TEST(Shape, ReproducesLinearFields) {
 TEST(Shape, QuadraticTypesReproduceQuadraticFields) {
   std::mt19937 rng(5);
   for (CellType t :
-       {CellType::kLine3, CellType::kTri6, CellType::kQuad9, CellType::kTet10, CellType::kHex27}) {
+       {CellType::kLine3, CellType::kTri6, CellType::kQuad9, CellType::kTet10, CellType::kHex27,
+        CellType::kQuad8, CellType::kHex20, CellType::kWedge15, CellType::kWedge18}) {
     const int n = cell_num_nodes(t);
     auto f = [](const double* x) {
       return 0.3 + x[0] - 0.5 * x[1] * x[1] + 2 * x[0] * x[2] - x[1] * x[2] + 0.25 * x[0] * x[0];
@@ -181,6 +186,63 @@ TEST(Shape, JacobianOfAffineMapIsItsMatrix) {
   }
 }
 
+// Beyond the complete quadratics each basis spans its own space: the serendipity quad8 / hex20
+// add x^2 y-type terms (hex20 also xyz), wedge15 = P2(tri) x P1(zeta) + P1(tri) zeta^2 and wedge18
+// = P2(tri) x P2(zeta). Each listed monomial is interpolated exactly (values and gradients);
+// a monomial outside the space is not (so the test can tell the bases apart).
+TEST(Shape, BasesReproduceTheirOwnPolynomialSpace) {
+  struct Case {
+    CellType type;
+    std::vector<std::array<int, 3>> inside;  // exponents of xi, eta, zeta
+    std::array<int, 3> outside;
+  };
+  const Case cases[] = {
+      {CellType::kQuad8, {{2, 1, 0}, {1, 2, 0}, {1, 1, 0}}, {2, 2, 0}},
+      {CellType::kHex20,
+       {{2, 1, 0}, {1, 2, 0}, {0, 2, 1}, {1, 0, 2}, {1, 1, 1}, {2, 1, 1}, {1, 2, 1}, {1, 1, 2}},
+       {2, 2, 0}},
+      {CellType::kWedge15, {{2, 0, 1}, {1, 1, 1}, {0, 2, 1}, {1, 0, 2}, {0, 1, 2}}, {2, 0, 2}},
+      {CellType::kWedge18, {{2, 0, 2}, {1, 1, 2}, {0, 2, 2}, {1, 0, 2}, {0, 0, 2}}, {3, 0, 0}},
+      {CellType::kQuad9, {{2, 2, 0}}, {3, 0, 0}},
+  };
+  auto mono = [](const std::array<int, 3>& e, const double* x) {
+    return std::pow(x[0], e[0]) * std::pow(x[1], e[1]) * std::pow(x[2], e[2]);
+  };
+  auto mono_grad = [](const std::array<int, 3>& e, const double* x, int j) {
+    if (e[j] == 0) return 0.0;
+    double g = e[j] * std::pow(x[j], e[j] - 1);
+    for (int k = 0; k < 3; ++k)
+      if (k != j) g *= std::pow(x[k], e[k]);
+    return g;
+  };
+  std::mt19937 rng(23);
+  for (const Case& c : cases) {
+    const int n = cell_num_nodes(c.type), d = cell_dim(c.type);
+    double worst_outside = 0;
+    for (int trial = 0; trial < 10; ++trial) {
+      double xi[3], N[kMaxCellNodes], dN[kMaxCellNodes * 3];
+      RandomInterior(c.type, &rng, xi);
+      shape_values(c.type, xi, N);
+      shape_gradients(c.type, xi, dN);
+      for (const auto& e : c.inside) {
+        double v = 0, g[3] = {0, 0, 0};
+        for (int i = 0; i < n; ++i) {
+          const double fi = mono(e, reference_node(c.type, i));
+          v += fi * N[i];
+          for (int j = 0; j < d; ++j) g[j] += fi * dN[i * d + j];
+        }
+        EXPECT_NEAR(v, mono(e, xi), 1e-12) << cell_name(c.type) << " " << e[0] << e[1] << e[2];
+        for (int j = 0; j < d; ++j)
+          EXPECT_NEAR(g[j], mono_grad(e, xi, j), 1e-11) << cell_name(c.type) << " d" << j;
+      }
+      double v = 0;
+      for (int i = 0; i < n; ++i) v += mono(c.outside, reference_node(c.type, i)) * N[i];
+      worst_outside = std::max(worst_outside, std::abs(v - mono(c.outside, xi)));
+    }
+    EXPECT_GT(worst_outside, 1e-3) << cell_name(c.type) << " reproduces a monomial outside it";
+  }
+}
+
 // The facets of the table are outward in the reference element: the right-hand normal of each
 // facet points away from the cell's centroid (2D: the edge (a, b) has outward normal (dy, -dx)).
 TEST(CellTypeTable, FacetsPointOutOfTheReferenceElement) {
@@ -217,7 +279,7 @@ TEST(CellTypeTable, FacetsPointOutOfTheReferenceElement) {
 }
 
 // Mid-edge nodes of quadratic types sit at the middle of the table's edges, in table order;
-// hex27's face nodes at the centre of the table's facets, in table order.
+// face nodes (hex27, wedge18) at the centre of their facets (cell_info's facet_nodes).
 TEST(CellTypeTable, MidNodesFollowEdgeAndFacetOrder) {
   for (CellType t : kAllTypes) {
     const CellInfo& info = cell_info(t);
@@ -228,16 +290,23 @@ TEST(CellTypeTable, MidNodesFollowEdgeAndFacetOrder) {
       const double* m = reference_node(t, info.num_corners + e);
       for (int j = 0; j < 3; ++j) EXPECT_EQ(m[j], 0.5 * (a[j] + b[j])) << cell_name(t) << e;
     }
-    if (t == CellType::kHex27) {
-      for (int f = 0; f < info.num_facets; ++f) {
-        const double* m = reference_node(t, 20 + f);
-        for (int j = 0; j < 3; ++j) {
-          double c = 0;
-          for (int k = 0; k < 4; ++k) c += 0.25 * reference_node(t, info.facets[f].corners[k])[j];
-          EXPECT_EQ(m[j], c) << "hex27 face " << f;
-        }
+    int face_nodes = 0;
+    for (int f = 0; f < info.num_facets; ++f) {
+      const int node = facet_node(info, f);
+      if (node < 0) continue;
+      ++face_nodes;
+      // Face nodes come after the corners and the mid-edge nodes.
+      EXPECT_GE(node, info.num_corners + info.num_edges) << cell_name(t);
+      const double* m = reference_node(t, node);
+      const int nc = info.facets[f].num_corners;
+      for (int j = 0; j < 3; ++j) {
+        double c = 0;
+        for (int k = 0; k < nc; ++k) c += reference_node(t, info.facets[f].corners[k])[j] / nc;
+        EXPECT_EQ(m[j], c) << cell_name(t) << " face " << f;
       }
     }
+    const int expected_faces = t == CellType::kHex27 ? 6 : (t == CellType::kWedge18 ? 3 : 0);
+    EXPECT_EQ(face_nodes, expected_faces) << cell_name(t);
   }
 }
 

@@ -28,11 +28,18 @@ import sys
 
 GMSH_TYPES = {15: "vertex", 1: "line2", 8: "line3", 2: "tri3", 3: "quad4", 4: "tet4",
               5: "hex8", 6: "wedge6", 7: "pyramid5", 9: "tri6", 10: "quad9", 11: "tet10",
-              12: "hex27"}
+              12: "hex27", 16: "quad8", 17: "hex20", 18: "wedge15", 13: "wedge18"}
 MESHIO_TYPES = {"vertex": "vertex", "line": "line2", "line3": "line3", "triangle": "tri3",
                 "quad": "quad4", "tetra": "tet4", "hexahedron": "hex8", "wedge": "wedge6",
                 "pyramid": "pyramid5", "triangle6": "tri6", "quad9": "quad9",
-                "tetra10": "tet10", "hexahedron27": "hex27"}
+                "tetra10": "tet10", "hexahedron27": "hex27", "quad8": "quad8",
+                "hexahedron20": "hex20", "wedge15": "wedge15", "wedge18": "wedge18"}
+# meshio keeps wedge15 / wedge18 from a .msh file in its own orders (its gmsh permutation for
+# wedge15, none for wedge18) but from VTK files in VTK's: the dump normalises both to VTK's, so
+# "order meshio" means VTK's order for every type but wedge6. Index k of a row = the meshio
+# node of VTK node k.
+MESHIO_MSH_TO_VTK = {"wedge15": [0, 2, 1, 3, 5, 4, 8, 7, 6, 11, 10, 9, 12, 14, 13],
+                     "wedge18": [0, 2, 1, 3, 5, 4, 7, 9, 6, 13, 14, 12, 8, 11, 10, 16, 17, 15]}
 
 
 def emit(order, points, cells, path):
@@ -69,7 +76,7 @@ def dump_gmsh(path):
     emit("gmsh", points, [e[1:] for e in elems], path + ".gmsh.dump")
 
 
-def meshio_cells(mesh):
+def meshio_cells(mesh, from_msh=False):
     cells = []
     for i, block in enumerate(mesh.cells):
         region = None
@@ -77,7 +84,10 @@ def meshio_cells(mesh):
             if key in mesh.cell_data:
                 region = mesh.cell_data[key][i]
                 break
+        perm = MESHIO_MSH_TO_VTK.get(block.type) if from_msh else None
         for k, nodes in enumerate(block.data):
+            if perm is not None:
+                nodes = [nodes[p] for p in perm]
             cells.append((MESHIO_TYPES[block.type], int(region[k]) if region is not None else 0,
                           nodes))
     return cells
@@ -85,8 +95,11 @@ def meshio_cells(mesh):
 
 def dump_meshio(path):
     import meshio
+    # meshio 5.0 reads and writes wedge15 but its topological_dimension table lacks the name
+    # (KeyError on every file holding one); the entry is all that is missing.
+    meshio._mesh.topological_dimension.setdefault("wedge15", 3)
     mesh = meshio.read(path)
-    emit("meshio", mesh.points, meshio_cells(mesh), path + ".meshio.dump")
+    emit("meshio", mesh.points, meshio_cells(mesh, path.endswith(".msh")), path + ".meshio.dump")
 
 
 def sample(types, with_quadratic):

@@ -1,5 +1,7 @@
 #include "tmop/element/cell_type.h"
 
+#include <string>
+
 namespace tmop {
 namespace {
 
@@ -26,21 +28,35 @@ const CellFacet kWedgeFacets[] = {
 const CellFacet kPyramidFacets[] = {
     {4, {0, 3, 2, 1}}, {3, {0, 1, 4}}, {3, {1, 2, 4}}, {3, {2, 3, 4}}, {3, {3, 0, 4}}};
 
+// Face nodes: hex27's follow the facet order (20..25); wedge18's sit on the three quad faces in
+// Gmsh's order (0-1-4-3, 0-2-5-3, 1-2-5-4).
+const int kHex27FaceNodes[] = {20, 21, 22, 23, 24, 25};
+const int kWedge18FaceNodes[] = {-1, -1, 15, 17, 16};
+
 #define TMOP_N(a) static_cast<int>(sizeof(a) / sizeof(a[0])), a
 const CellInfo kTable[kNumCellTypes] = {
-    {"vertex", 0, 1, 1, 1, CellType::kVertex, 15, 0, nullptr, 0, nullptr},
-    {"line2", 1, 2, 2, 1, CellType::kLine2, 1, TMOP_N(kLineEdges), TMOP_N(kLineFacets)},
-    {"line3", 1, 3, 2, 2, CellType::kLine2, 8, TMOP_N(kLineEdges), TMOP_N(kLineFacets)},
-    {"tri3", 2, 3, 3, 1, CellType::kTri3, 2, TMOP_N(kTriEdges), TMOP_N(kTriFacets)},
-    {"quad4", 2, 4, 4, 1, CellType::kQuad4, 3, TMOP_N(kQuadEdges), TMOP_N(kQuadFacets)},
-    {"tet4", 3, 4, 4, 1, CellType::kTet4, 4, TMOP_N(kTetEdges), TMOP_N(kTetFacets)},
-    {"hex8", 3, 8, 8, 1, CellType::kHex8, 5, TMOP_N(kHexEdges), TMOP_N(kHexFacets)},
-    {"wedge6", 3, 6, 6, 1, CellType::kWedge6, 6, TMOP_N(kWedgeEdges), TMOP_N(kWedgeFacets)},
-    {"pyramid5", 3, 5, 5, 1, CellType::kPyramid5, 7, TMOP_N(kPyramidEdges), TMOP_N(kPyramidFacets)},
-    {"tri6", 2, 6, 3, 2, CellType::kTri3, 9, TMOP_N(kTriEdges), TMOP_N(kTriFacets)},
-    {"quad9", 2, 9, 4, 2, CellType::kQuad4, 10, TMOP_N(kQuadEdges), TMOP_N(kQuadFacets)},
-    {"tet10", 3, 10, 4, 2, CellType::kTet4, 11, TMOP_N(kTetEdges), TMOP_N(kTetFacets)},
-    {"hex27", 3, 27, 8, 2, CellType::kHex8, 12, TMOP_N(kHexEdges), TMOP_N(kHexFacets)},
+    {"vertex", 0, 1, 1, 1, CellType::kVertex, 15, 0, nullptr, 0, nullptr, nullptr},
+    {"line2", 1, 2, 2, 1, CellType::kLine2, 1, TMOP_N(kLineEdges), TMOP_N(kLineFacets), nullptr},
+    {"line3", 1, 3, 2, 2, CellType::kLine2, 8, TMOP_N(kLineEdges), TMOP_N(kLineFacets), nullptr},
+    {"tri3", 2, 3, 3, 1, CellType::kTri3, 2, TMOP_N(kTriEdges), TMOP_N(kTriFacets), nullptr},
+    {"quad4", 2, 4, 4, 1, CellType::kQuad4, 3, TMOP_N(kQuadEdges), TMOP_N(kQuadFacets), nullptr},
+    {"tet4", 3, 4, 4, 1, CellType::kTet4, 4, TMOP_N(kTetEdges), TMOP_N(kTetFacets), nullptr},
+    {"hex8", 3, 8, 8, 1, CellType::kHex8, 5, TMOP_N(kHexEdges), TMOP_N(kHexFacets), nullptr},
+    {"wedge6", 3, 6, 6, 1, CellType::kWedge6, 6, TMOP_N(kWedgeEdges), TMOP_N(kWedgeFacets),
+     nullptr},
+    {"pyramid5", 3, 5, 5, 1, CellType::kPyramid5, 7, TMOP_N(kPyramidEdges), TMOP_N(kPyramidFacets),
+     nullptr},
+    {"tri6", 2, 6, 3, 2, CellType::kTri3, 9, TMOP_N(kTriEdges), TMOP_N(kTriFacets), nullptr},
+    {"quad9", 2, 9, 4, 2, CellType::kQuad4, 10, TMOP_N(kQuadEdges), TMOP_N(kQuadFacets), nullptr},
+    {"tet10", 3, 10, 4, 2, CellType::kTet4, 11, TMOP_N(kTetEdges), TMOP_N(kTetFacets), nullptr},
+    {"hex27", 3, 27, 8, 2, CellType::kHex8, 12, TMOP_N(kHexEdges), TMOP_N(kHexFacets),
+     kHex27FaceNodes},
+    {"quad8", 2, 8, 4, 2, CellType::kQuad4, 16, TMOP_N(kQuadEdges), TMOP_N(kQuadFacets), nullptr},
+    {"hex20", 3, 20, 8, 2, CellType::kHex8, 17, TMOP_N(kHexEdges), TMOP_N(kHexFacets), nullptr},
+    {"wedge15", 3, 15, 6, 2, CellType::kWedge6, 18, TMOP_N(kWedgeEdges), TMOP_N(kWedgeFacets),
+     nullptr},
+    {"wedge18", 3, 18, 6, 2, CellType::kWedge6, 13, TMOP_N(kWedgeEdges), TMOP_N(kWedgeFacets),
+     kWedge18FaceNodes},
 };
 #undef TMOP_N
 
@@ -66,6 +82,18 @@ bool cell_type_from_gmsh(int gmsh_type, CellType* type) {
     }
   }
   return false;
+}
+
+const std::string& supported_cell_types() {
+  static const std::string list = [] {
+    std::string out;
+    for (int i = 0; i < kNumCellTypes; ++i) {
+      if (i > 0) out += ", ";
+      out += kTable[i].name;
+    }
+    return out;
+  }();
+  return list;
 }
 
 }  // namespace tmop

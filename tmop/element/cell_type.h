@@ -5,6 +5,10 @@
 // pairs of local corner indices, in the order that quadratic types place their mid-edge nodes),
 // and the facets (faces of 3D cells, edges of 2D cells) as local corner indices ordered so that
 // the right-hand normal points out of the cell.
+// Families: Lagrange (tri6, quad9, tet10, hex27, wedge18 = tri6 x line3), serendipity (quad8,
+// hex20, wedge15: corners and mid-edge nodes only) and the pyramids (pyramid5 / 13 / 14, rational
+// bases). Every quadratic type places its mid-edge nodes right after the corners, in the order of
+// `edges`, then its face nodes (facet_nodes), then a centre node if it has one.
 #ifndef TMOP_ELEMENT_CELL_TYPE_H_
 #define TMOP_ELEMENT_CELL_TYPE_H_
 
@@ -27,8 +31,12 @@ enum class CellType : std::uint8_t {
   kQuad9,
   kTet10,
   kHex27,
+  kQuad8,    // serendipity quad (Gmsh 16, VTK_QUADRATIC_QUAD)
+  kHex20,    // serendipity hex (Gmsh 17, VTK_QUADRATIC_HEXAHEDRON)
+  kWedge15,  // serendipity wedge (Gmsh 18, VTK_QUADRATIC_WEDGE)
+  kWedge18,  // Lagrange wedge tri6 x line3 (Gmsh 13, VTK_BIQUADRATIC_QUADRATIC_WEDGE)
 };
-constexpr int kNumCellTypes = 13;
+constexpr int kNumCellTypes = 17;
 constexpr int kMaxCellNodes = 27;
 
 struct CellFacet {
@@ -48,7 +56,15 @@ struct CellInfo {
   const int (*edges)[2];
   int num_facets;
   const CellFacet* facets;
+  // Local node index of the node at the centre of each facet (num_facets entries, -1 where the
+  // facet has none), or nullptr when the type has no face nodes (hex27, wedge18 have them).
+  const int* facet_nodes;
 };
+
+// The facet node of facet `f` of `info`, -1 when there is none.
+inline int facet_node(const CellInfo& info, int f) {
+  return info.facet_nodes ? info.facet_nodes[f] : -1;
+}
 
 const CellInfo& cell_info(CellType type);
 inline int cell_dim(CellType t) { return cell_info(t).dim; }
@@ -59,6 +75,9 @@ inline const char* cell_name(CellType t) { return cell_info(t).name; }
 bool cell_type_from_name(const std::string& name, CellType* type);
 // Looks a type up by its Gmsh element-type number; false when tmop does not support it.
 bool cell_type_from_gmsh(int gmsh_type, CellType* type);
+
+// "tri3, quad4, ..." : every supported cell type's table name, for messages that refuse a type.
+const std::string& supported_cell_types();
 
 }  // namespace tmop
 

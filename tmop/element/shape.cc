@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "tmop/element/shape_families.h"
+
 namespace tmop {
 namespace {
 
@@ -31,10 +33,22 @@ constexpr double kHex27Nodes[][3] = {
     {1, 1, 0},    {-1, 1, 0},  {0, -1, 1},  {-1, 0, 1},  {1, 0, 1},   {0, 1, 1},  {0, 0, -1},
     {0, -1, 0},   {-1, 0, 0},  {1, 0, 0},   {0, 1, 0},   {0, 0, 1},   {0, 0, 0}};
 
+// The serendipity quad8 / hex20 are quad9 / hex27 without their face and centre nodes.
+constexpr const double (*kQuad8Nodes)[3] = kQuad9Nodes;
+constexpr const double (*kHex20Nodes)[3] = kHex27Nodes;
+// wedge15: corners, then the mid-edge nodes in the cell table's edge order; wedge18 adds the
+// centres of the quad faces 0-1-4-3, 0-2-5-3, 1-2-5-4.
+constexpr double kWedge18Nodes[][3] = {
+    {0, 0, -1},   {1, 0, -1},   {0, 1, -1},    {0, 0, 1},      {1, 0, 1},   {0, 1, 1},
+    {0.5, 0, -1}, {0, 0.5, -1}, {0, 0, 0},     {0.5, 0.5, -1}, {1, 0, 0},   {0, 1, 0},
+    {0.5, 0, 1},  {0, 0.5, 1},  {0.5, 0.5, 1}, {0.5, 0, 0},    {0, 0.5, 0}, {0.5, 0.5, 0}};
+constexpr const double (*kWedge15Nodes)[3] = kWedge18Nodes;
+
 // Indexed by static_cast<int>(CellType); the order of the enum.
 constexpr const double (*kNodes[kNumCellTypes])[3] = {
-    kVertexNodes, kLine2Nodes,    kLine3Nodes, kTri3Nodes,  kQuad4Nodes, kTet4Nodes, kHex8Nodes,
-    kWedge6Nodes, kPyramid5Nodes, kTri6Nodes,  kQuad9Nodes, kTet10Nodes, kHex27Nodes};
+    kVertexNodes, kLine2Nodes,  kLine3Nodes,    kTri3Nodes,    kQuad4Nodes,  kTet4Nodes,
+    kHex8Nodes,   kWedge6Nodes, kPyramid5Nodes, kTri6Nodes,    kQuad9Nodes,  kTet10Nodes,
+    kHex27Nodes,  kQuad8Nodes,  kHex20Nodes,    kWedge15Nodes, kWedge18Nodes};
 
 // Tensor-product types: the 1D factor of node i along axis j is picked by the node's reference
 // coordinate (-1 -> 0, +1 -> 1, 0 -> 2, the line3 node order). Derived from the node table at
@@ -209,6 +223,18 @@ void Evaluate(CellType type, const double* xi, double* N, double* dN) {
       return;
     case CellType::kPyramid5:
       Pyramid(xi, N, dN);
+      return;
+    case CellType::kQuad8:
+      internal::serendipity_tensor(2, 8, kQuad8Nodes, xi, N, dN);
+      return;
+    case CellType::kHex20:
+      internal::serendipity_tensor(3, 20, kHex20Nodes, xi, N, dN);
+      return;
+    case CellType::kWedge15:
+      internal::wedge15(xi, N, dN);
+      return;
+    case CellType::kWedge18:
+      internal::wedge18(xi, N, dN);
       return;
   }
 }

@@ -4,8 +4,10 @@
 // [-1,1]); pyramid: base [-1,1]^2 at zeta = 0, apex (0,0,1). Node order is Gmsh's (cell_type.h);
 // tests/element/gmsh_agreement_test.cc checks both against the gmsh module itself.
 // Bases: Lagrange (tensor products of 1D Lagrange for quad/hex, barycentric for simplices,
-// triangle x line for the wedge); the pyramid uses Gmsh's rational basis
-// N = (1 - zeta +- xi)(1 - zeta +- eta) / (4 (1 - zeta)) for the base nodes, N = zeta for the apex.
+// triangle x line for the wedges: wedge6 tri3 x line2, wedge18 tri6 x line3); serendipity for
+// quad8, hex20 and wedge15 (shape_families.h gives the formulas); the pyramid uses Gmsh's rational
+// basis N = (1 - zeta +- xi)(1 - zeta +- eta) / (4 (1 - zeta)) for the base nodes, N = zeta for the
+// apex.
 //
 // All functions here are allocation-free, have no failure mode (type must be a valid enum value,
 // arrays large enough) and are safe to call from many threads.

@@ -100,8 +100,8 @@ void facet_extra_nodes(CellType type, int local, const std::int32_t* nodes, std:
       }
     }
   }
-  // Gmsh places hex27's face nodes after its 12 edge nodes, in the facet order.
-  if (type == CellType::kHex27) *centre = nodes[20 + local];
+  // hex27's and wedge18's face nodes (cell_type.h's facet_nodes).
+  if (facet_node(info, local) >= 0) *centre = nodes[facet_node(info, local)];
 }
 
 void face_normal(const Mesh& mesh, Face* f) {

@@ -209,8 +209,7 @@ class MshReader {
     CellType t;
     if (!cell_type_from_gmsh(static_cast<int>(gmsh_type), &t)) {
       const std::string msg = "unsupported Gmsh element type " + std::to_string(gmsh_type) +
-                              " (tmop reads points, lines, tri3/6, quad4/9, tet4/10, hex8/27, "
-                              "wedge6, pyramid5)";
+                              " (tmop reads " + supported_cell_types() + ")";
       binary_ ? s_.fail_byte(pos, msg) : s_.fail_at(pos, msg);
     }
     return t;

@@ -10,6 +10,12 @@ const int kWedge6[6] = {0, 2, 1, 3, 5, 4};
 const int kTet10[10] = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
 const int kHex27[27] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  11, 13, 9,  16, 18,
                         19, 17, 10, 12, 14, 15, 22, 23, 21, 24, 20, 25, 26};
+// hex20 is hex27 without its face and centre nodes: the same first 20 entries.
+const int* const kHex20 = kHex27;
+// VTK's wedges: the base triangle reversed (as wedge6), then edges bottom, top, vertical, then
+// (wedge18) the quad faces.
+const int kWedge15[15] = {0, 2, 1, 3, 5, 4, 7, 9, 6, 13, 14, 12, 8, 11, 10};
+const int kWedge18[18] = {0, 2, 1, 3, 5, 4, 7, 9, 6, 13, 14, 12, 8, 11, 10, 16, 17, 15};
 
 // Indexed by CellType.
 const int kVtkTypes[kNumCellTypes] = {
@@ -26,6 +32,10 @@ const int kVtkTypes[kNumCellTypes] = {
     28,  // quad9: VTK_BIQUADRATIC_QUAD
     24,  // tet10: VTK_QUADRATIC_TETRA
     29,  // hex27: VTK_TRIQUADRATIC_HEXAHEDRON
+    23,  // quad8: VTK_QUADRATIC_QUAD
+    25,  // hex20: VTK_QUADRATIC_HEXAHEDRON
+    26,  // wedge15: VTK_QUADRATIC_WEDGE
+    32,  // wedge18: VTK_BIQUADRATIC_QUADRATIC_WEDGE
 };
 
 }  // namespace
@@ -50,9 +60,50 @@ const int* gmsh_index_of_vtk_node(CellType type) {
       return kTet10;
     case CellType::kHex27:
       return kHex27;
+    case CellType::kHex20:
+      return kHex20;
+    case CellType::kWedge15:
+      return kWedge15;
+    case CellType::kWedge18:
+      return kWedge18;
     default:
       return kIdentity;
   }
+}
+
+std::string unsupported_vtk_type_note(std::int64_t vtk_type) {
+  const char* name = nullptr;
+  switch (vtk_type) {
+    case 2:
+      name = "VTK_POLY_VERTEX";
+      break;
+    case 4:
+      name = "VTK_POLY_LINE";
+      break;
+    case 6:
+      name = "VTK_TRIANGLE_STRIP";
+      break;
+    case 7:
+      name = "VTK_POLYGON";
+      break;
+    case 8:
+      name = "VTK_PIXEL";
+      break;
+    case 11:
+      name = "VTK_VOXEL";
+      break;
+    case 27:
+      name = "VTK_QUADRATIC_PYRAMID";
+      break;
+    case 42:
+      name = "VTK_POLYHEDRON";
+      break;
+    default:
+      if (vtk_type >= 68 && vtk_type <= 74) name = "an arbitrary-order VTK Lagrange cell";
+      if (vtk_type >= 75 && vtk_type <= 81) name = "an arbitrary-order VTK Bezier cell";
+  }
+  return std::string(" (") + (name ? std::string(name) + "; " : std::string()) + "tmop reads " +
+         supported_cell_types() + ")";
 }
 
 }  // namespace io

@@ -6,9 +6,17 @@
 //           it, so VTK = Gmsh [0,2,1,3,5,4];
 //   tet10:  mid-edge nodes 8 and 9 swapped (VTK 8 = edge 1-3, 9 = edge 2-3);
 //   hex27:  VTK groups edges bottom / top / vertical and faces x- x+ y- y+ z- z+;
-//   all other types (vertex, line2/3, tri3/6, quad4/9, tet4, hex8, pyramid5) are identical.
+//   hex20:  hex27's first 20 entries;
+//   wedge15 / wedge18: wedge6's corners, edges bottom / top / vertical (and wedge18's quad faces
+//           0-1-4-3 0-2-5-3 1-2-5-4 as VTK's 17 15 16);
+//   all other types (vertex, line2/3, tri3/6, quad4/8/9, tet4, hex8, pyramid5) are identical.
+// The quadratic tables were derived from VTK 9's own parametric coordinates of each node
+// (vtkCell::GetParametricCoords) and checked by tests/io/vtk_cells_test.py through vtk itself.
 #ifndef TMOP_IO_NODE_ORDER_H_
 #define TMOP_IO_NODE_ORDER_H_
+
+#include <cstdint>
+#include <string>
 
 #include "tmop/element/cell_type.h"
 
@@ -22,6 +30,12 @@ bool cell_type_from_vtk(int vtk_type, CellType* type);
 // p[i] = the Gmsh-order index of VTK node i (cell_num_nodes(type) entries). Reading VTK:
 // gmsh[p[i]] = vtk[i]; writing: vtk[i] = gmsh[p[i]].
 const int* gmsh_index_of_vtk_node(CellType type);
+
+// The tail of the message refusing VTK cell type `vtk_type`: its VTK name where the refused
+// type is a common one (polygon, polyhedron, pixel, voxel, quadratic pyramid, arbitrary-order
+// Lagrange / Bezier cells) and the list of types tmop reads, e.g.
+// " (VTK_POLYHEDRON; tmop reads vertex, line2, ...)".
+std::string unsupported_vtk_type_note(std::int64_t vtk_type);
 
 }  // namespace io
 }  // namespace tmop

@@ -328,7 +328,7 @@ class VtkReader {
       if (types[c] < 0 || types[c] > 255 || !cell_type_from_vtk(static_cast<int>(types[c]), &type))
         fail_value(types_at_, static_cast<std::int64_t>(c), types_pos_,
                    "cell " + std::to_string(c) + ": unsupported VTK cell type " +
-                       std::to_string(types[c]));
+                       std::to_string(types[c]) + io::unsupported_vtk_type_note(types[c]));
       const std::int64_t b = offsets[c], e = offsets[c + 1];
       // Where cell c's node count is: OFFSETS[c + 1] (5.1), its count entry in a legacy list.
       const bool flat = flat_.start != kNoPos;

@@ -501,8 +501,10 @@ class VtuReader {
       // The range check comes before the cast (a double outside int is undefined behaviour).
       if (!(vt >= 0 && vt <= 255) || vt != std::floor(vt) ||
           !cell_type_from_vtk(static_cast<int>(vt), &type))
-        s_.fail_at(types_pos_,
-                   "cell " + std::to_string(c) + ": unsupported VTK cell type " + num(vt));
+        s_.fail_at(types_pos_, "cell " + std::to_string(c) + ": unsupported VTK cell type " +
+                                   num(vt) +
+                                   io::unsupported_vtk_type_note(
+                                       vt >= 0 && vt <= 1e9 ? static_cast<std::int64_t>(vt) : -1));
       const double end = offsets[static_cast<std::size_t>(c)];
       // A short connectivity array is the usual damage (truncated or hand-edited file), so it
       // is named as such rather than as a wrong node count.

@@ -47,8 +47,8 @@ const int* CornerFlip(CellType linear) {
 
 // Full permutations derived from the corner ones and the cell table: the new mid-edge node of
 // edge (a, b) is the old node of edge (p[a], p[b]); the new face node of facet f is the old node
-// of the facet with the same corner set; anything else (quad9 / hex27 centre, line3 middle)
-// stays.
+// of the facet with the same corner set (cell_info's facet_nodes); anything else (quad9 /
+// hex27 centre, line3 middle) stays.
 struct Permutations {
   std::array<std::array<int, kMaxCellNodes>, kNumCellTypes> perm{};
   Permutations() {
@@ -69,8 +69,9 @@ struct Permutations {
               out[next] = info.num_corners + o;
         }
       }
-      if (info.dim == 3 && info.num_nodes > next) {
+      if (info.dim == 3 && info.facet_nodes) {
         for (int f = 0; f < info.num_facets; ++f) {
+          if (facet_node(info, f) < 0) continue;
           const CellFacet& nf = info.facets[f];
           unsigned mask = 0;
           for (int k = 0; k < nf.num_corners; ++k) mask |= 1u << p[nf.corners[k]];
@@ -78,7 +79,7 @@ struct Permutations {
             unsigned omask = 0;
             for (int k = 0; k < info.facets[o].num_corners; ++k)
               omask |= 1u << info.facets[o].corners[k];
-            if (omask == mask) out[next + f] = next + o;
+            if (omask == mask) out[facet_node(info, f)] = facet_node(info, o);
           }
         }
       }
