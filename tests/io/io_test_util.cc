@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "tmop/io/mesh_io.h"
 #include "tmop/io/node_order.h"
 
 namespace tmop {
@@ -242,6 +243,21 @@ std::string diff_dumps(const Dump& a, const Dump& b, double rel_tol) {
   }
   for (std::size_t i = 0; i < ca.size(); ++i)
     if (ca[i] != cb[i]) return "cell '" + ca[i] + "' vs '" + cb[i] + "'";
+  return "";
+}
+
+std::string round_trip(const Mesh& mesh, const std::vector<std::string>& names) {
+  const std::string dir = temp_dir();
+  for (const std::string& name : names) {
+    const std::string path = dir + "/" + name;
+    const Status w = write_mesh(path, mesh);
+    if (!w.ok()) return name + ": " + w.message();
+    Mesh back;
+    const Status r = read_mesh(path, &back);
+    if (!r.ok()) return name + ": " + r.message();
+    const std::string d = diff_meshes(mesh, back, false);
+    if (!d.empty()) return name + ": " + d;
+  }
   return "";
 }
 

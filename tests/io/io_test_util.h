@@ -26,6 +26,10 @@ std::string diff_meshes(const Mesh& a, const Mesh& b, bool compare_entity = true
 // A fresh empty directory under the build tree, named after the current test.
 std::string temp_dir();
 
+// Writes `mesh` to temp_dir()/NAME for each name and reads it back: "" when every round trip
+// keeps the mesh (entities not compared: formats without them), else the first failure.
+std::string round_trip(const Mesh& mesh, const std::vector<std::string>& names);
+
 // Runs a shell command; returns its exit code, stdout in *out.
 int run(const std::string& command, std::string* out);
 bool have_program(const std::string& name);

@@ -73,6 +73,15 @@ TEST(Guarantees, CellsInvertedInTheInputMayEndAtAnyValidShape) {
   EXPECT_TRUE(check_guarantees(b, b.input).empty());
   result.vertex(2)[0] = 0.4;
   EXPECT_FALSE(check_guarantees(b, guarantee_values(result, 1)).empty());
+  // tmop_optimize's check of a tangled input: new inversions only.
+  GuaranteeOptions untangling;
+  untangling.tangled_inversions_only = true;
+  EXPECT_TRUE(check_guarantees(b, guarantee_values(result, 1), untangling).empty());
+  result.vertex(2)[0] = 2.0;  // triangle 0 folds
+  const std::vector<GuaranteeViolation> v =
+      check_guarantees(b, guarantee_values(result, 1), untangling);
+  ASSERT_FALSE(v.empty());
+  EXPECT_EQ(v[0].kind, GuaranteeViolation::Kind::kInverted);
 }
 
 TEST(Guarantees, RegionsAreGroupsOfTheirOwn) {

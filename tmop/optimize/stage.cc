@@ -27,144 +27,12 @@
 #include "tmop/optimize/power_loss.h"
 #include "tmop/optimize/sample_measures.h"
 #include "tmop/optimize/sample_point_cost.h"
+#include "tmop/optimize/stage_callback.h"
+#include "tmop/optimize/stage_spec.h"
 #include "tmop/quality/parallel_for.h"
 
 namespace tmop {
 namespace {
-
-class StageCallback final : public ceres::IterationCallback {
- public:
-  // exact_objective: the stage's objective at the current nodes (measured when reporting).
-  StageCallback(Mesh* mesh, const StageSpec& spec, const IdealTable& table, const Frames& frames,
-                const std::vector<int>& free_vertices, const std::vector<double>& shortest,
-                int num_elements, std::function<double()> exact_objective, StageResult* result)
-      : mesh_(mesh),
-        spec_(spec),
-        table_(table),
-        frames_(frames),
-        free_(free_vertices),
-        shortest_(shortest),
-        num_elements_(num_elements),
-        exact_objective_(std::move(exact_objective)),
-        result_(result),
-        start_(std::chrono::steady_clock::now()) {
-    previous_.resize(free_.size() * mesh->space_dim);
-    save(&previous_);
-  }
-
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    const bool report = spec_.solver.verbose || static_cast<bool>(spec_.solver.progress);
-    IterationRecord rec;
-    if (report) {
-      double objective = 0;
-      side_by_side(
-          spec_.solver.threads != 1, [&] { rec = measure(*mesh_, table_, frames_); },
-          [&] { objective = exact_objective_(); });
-      rec.objective = objective;
-    } else {
-      rec.min_quality = std::numeric_limits<double>::quiet_NaN();
-      rec.inverted = -1;
-    }
-    rec.iteration = s.iteration == 0 && !result_->history.empty()
-                        ? result_->history.back().iteration  // a frame or eps round restarts
-                        : (result_->history.empty() ? 0 : result_->history.back().iteration + 1);
-    rec.solver_objective = 2 * s.cost / std::max(1, num_elements_);
-    rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    result_->history.push_back(rec);
-    if (spec_.solver.verbose)
-      std::fprintf(stderr,
-                   "  [%s] iter %4d  objective %.6e  (solver %.6e)  min quality %.4f  inverted %d"
-                   "  %.2f s\n",
-                   spec_.name.c_str(), rec.iteration, rec.objective, rec.solver_objective,
-                   rec.min_quality, rec.inverted, rec.seconds);
-    if (spec_.solver.progress) spec_.solver.progress(rec);
-
-    if (s.iteration == 0) {  // a new solve (frame or eps round): its own counts
-      initial_gradient_ = s.gradient_max_norm;
-      small_steps_ = 0;
-      small_decreases_ = 0;
-      save(&previous_);
-      return ceres::SOLVER_CONTINUE;
-    }
-    // Not under a power: there the initial gradient is dominated by the worst point's weight
-    // (v/m)^(p-1), so a fraction of it says nothing about the rest (1M tets: 1e-9 of it was
-    // reached at iteration 13, the worst quality still rising 1.5x per iteration).
-    if (power_scale_ == 0 && initial_gradient_ > 0 &&
-        s.gradient_max_norm <= spec_.solver.gradient_tolerance * initial_gradient_) {
-      reason_ = "gradient below tolerance (relative to the initial gradient)";
-      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-    }
-    if (s.step_is_successful) {
-      const int sd = mesh_->space_dim;
-      double worst = 0;
-      for (std::size_t k = 0; k < free_.size(); ++k) {
-        const double* x = mesh_->vertex(free_[k]);
-        double m2 = 0;
-        for (int a = 0; a < sd; ++a) {
-          const double t = x[a] - previous_[k * sd + a];
-          m2 += t * t;
-        }
-        worst = std::max(worst, std::sqrt(m2) / shortest_[free_[k]]);
-      }
-      save(&previous_);
-      // One small step may only mean the trust region collapsed after rejected steps (a
-      // barrier, a manifold's projection); Levenberg-Marquardt widens it again after successes,
-      // so only several small successful steps in a row mean convergence.
-      small_steps_ = worst <= spec_.solver.movement_tolerance ? small_steps_ + 1 : 0;
-      if (small_steps_ >= 3) {
-        reason_ = "vertex movement below tolerance (relative to local edge length)";
-        return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-      }
-      // The metrics are dimensionless, so the decrease of the mean metric per element is too.
-      // Two in a row, like the movement rule (one may follow a collapsed trust region).
-      // A power objective (stage.h) decreases by phi'(v) = (1 + v/m)^(p-1) times the mean
-      // metric; the rule divides that out at the current point (v from the objective as if
-      // every point were alike: objective = (m/p)((1 + v/m)^p - 1)), so it means the same
-      // for every power.
-      double scale = 1.0;
-      if (power_scale_ > 0) {
-        const double p = spec_.power, objective = 2 * s.cost / std::max(1, num_elements_);
-        scale = std::pow(1 + p * std::max(0.0, objective) / power_scale_, (p - 1) / p);
-      }
-      const double decrease = 2 * s.cost_change / (std::max(1, num_elements_) * scale);
-      small_decreases_ =
-          !spec_.untangle && decrease < spec_.solver.objective_tolerance ? small_decreases_ + 1 : 0;
-      if (small_decreases_ >= 2) {
-        reason_ = "mean metric decrease per element below objective_tolerance";
-        return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
-      }
-    }
-    return ceres::SOLVER_CONTINUE;
-  }
-
-  const std::string& reason() const { return reason_; }
-  // The scale m of a power objective (0: the plain objective).
-  void set_power_scale(double m) { power_scale_ = m; }
-
- private:
-  void save(std::vector<double>* out) const {
-    const int sd = mesh_->space_dim;
-    for (std::size_t k = 0; k < free_.size(); ++k)
-      for (int a = 0; a < sd; ++a) (*out)[k * sd + a] = mesh_->vertex(free_[k])[a];
-  }
-
-  Mesh* mesh_;
-  const StageSpec& spec_;
-  const IdealTable& table_;
-  const Frames& frames_;
-  const std::vector<int>& free_;
-  const std::vector<double>& shortest_;
-  int num_elements_;
-  std::function<double()> exact_objective_;
-  StageResult* result_;
-  std::chrono::steady_clock::time_point start_;
-  std::vector<double> previous_;
-  double initial_gradient_ = 0;
-  int small_steps_ = 0;
-  int small_decreases_ = 0;
-  double power_scale_ = 0;
-  std::string reason_;
-};
 
 // Exact mean of sum_t c_t mu_t over elements (weights of a cell's points sum to 1); in the
 // same pass, when `excess` is given, the mean of sum_t c_t (mu_t - mu_t,min).
@@ -226,28 +94,6 @@ std::string list_cells(const std::vector<int>& cells) {
 
 }  // namespace
 
-bool solver_method_from_name(const std::string& name, SolverOptions::Method* method) {
-  if (name == "lm")
-    *method = SolverOptions::Method::kLevenbergMarquardt;
-  else if (name == "dogleg")
-    *method = SolverOptions::Method::kDogleg;
-  else
-    return false;
-  return true;
-}
-
-bool linear_solver_from_name(const std::string& name, SolverOptions::LinearSolver* solver) {
-  if (name == "auto")
-    *solver = SolverOptions::LinearSolver::kAuto;
-  else if (name == "cholesky")
-    *solver = SolverOptions::LinearSolver::kSparseCholesky;
-  else if (name == "cgnr")
-    *solver = SolverOptions::LinearSolver::kCgnr;
-  else
-    return false;
-  return true;
-}
-
 IterationRecord measure_mesh(const Mesh& mesh, SampleRule rule) {
   const int d = mesh.dim();
   if (d < 2 || (mesh.space_dim != d && d != 2)) return IterationRecord();
@@ -260,48 +106,13 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   result->name = spec.name;
   const auto start = std::chrono::steady_clock::now();
   const int d = mesh->dim();
-  if (d < 2) return Status::Failure("the mesh has no 2D or 3D elements to optimize");
+  Status checked = check_stage_spec(*mesh, spec);
+  if (!checked.ok()) return checked;
   const bool surface = mesh->space_dim != d;
-  if (surface && (d != 2 || !spec.boundary))
-    return Status::Failure("surface meshes (2D cells in 3D) need a geometry (recipe surface)");
-  if (spec.boundary && spec.boundary->num_vertices() != mesh->num_vertices())
-    return Status::Failure("boundary constraints were built for another mesh");
-  if (spec.terms.empty() || spec.terms.size() > static_cast<std::size_t>(kMaxTerms))
-    return Status::Failure("a stage needs 1 or 2 metric terms");
-  for (const TermSpec& t : spec.terms) {
-    if (!t.metric) return Status::Failure("a metric term has no metric");
-    if (t.metric->dim() != d)
-      return Status::Failure("metric " + t.metric->name() + " is " +
-                             std::to_string(t.metric->dim()) + "D but the mesh is " +
-                             std::to_string(d) + "D");
-  }
-  for (double x : mesh->coords)
-    if (!std::isfinite(x)) return Status::Failure("the mesh has a non-finite coordinate");
-  if (!(std::isfinite(spec.power) && spec.power >= 1))
-    return Status::Failure("the power-mean order p must be finite and >= 1");
-  if (!(std::isfinite(spec.power_scale_fraction) && spec.power_scale_fraction > 0))
-    return Status::Failure("the power objective's scale fraction must be finite and > 0");
-  if (!(spec.power_model_cutoff > 0))
-    return Status::Failure("the power objective's model cutoff must be > 0");
-  if (!(spec.untangle_sigma_min > 0 && spec.untangle_sigma_min < 1))
-    return Status::Failure("untangling: sigma_min must lie in (0, 1)");
-  // Ceres's dogleg needs a factorisation: under kAuto it always gets sparse Cholesky (below).
   const bool dogleg = spec.solver.method == SolverOptions::Method::kDogleg;
-  if (dogleg && spec.solver.linear_solver == SolverOptions::LinearSolver::kCgnr)
-    return Status::Failure(
-        "the dogleg method needs sparse Cholesky (Ceres's dogleg cannot use CGNR): use the lm "
-        "method with CGNR, or the cholesky or auto linear solver");
-
-  // Fixed vertices: given, or the boundary.
-  std::vector<char> fixed = spec.fixed;
-  if (spec.boundary) {
-    const std::vector<char> corners = spec.boundary->fixed_flags();
-    if (fixed.empty()) fixed.assign(mesh->num_vertices(), 0);
-    for (std::size_t v = 0; v < fixed.size() && v < corners.size(); ++v) fixed[v] |= corners[v];
-  }
-  if (fixed.empty()) fixed = boundary_vertex_mask(*mesh);
-  if (static_cast<int>(fixed.size()) != mesh->num_vertices())
-    return Status::Failure("fixed-vertex flags: one per vertex expected");
+  std::vector<char> fixed;
+  checked = stage_fixed_vertices(*mesh, spec, &fixed);
+  if (!checked.ok()) return checked;
 
   // Sample points: the rule's canonical set, then the stage's extra points. Untangling always
   // samples at the corners (validity_rule): an energy that sees only centroids or Gauss points
@@ -790,13 +601,14 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                                           " eps rounds (final eps " + eps_text + ")")
             : "still inverted after " + std::to_string(untangle_rounds) + " eps rounds" +
                   (kept_round < 0 ||
-                           last_round_inverted == static_cast<int>(result->inverted_cells.size()) ? std::string()
-                                  : "; the best state kept (" +
-                                        (kept_round == 0 ? std::string("the start")
-                                                         : "round " + std::to_string(kept_round)) +
-                                        ": " + std::to_string(result->inverted_cells.size()) +
-                                        " cells inverted at sample points, the last round " +
-                                        std::to_string(last_round_inverted) + ")");
+                           last_round_inverted == static_cast<int>(result->inverted_cells.size())
+                       ? std::string()
+                       : "; the best state kept (" +
+                             (kept_round == 0 ? std::string("the start")
+                                              : "round " + std::to_string(kept_round)) +
+                             ": " + std::to_string(result->inverted_cells.size()) +
+                             " cells inverted at sample points, the last round " +
+                             std::to_string(last_round_inverted) + ")");
   }
   // Mapping back is not bit-exact: vertices that were never free or did not move keep their
   // input coordinates (a stage that moves nothing returns the input's bits).

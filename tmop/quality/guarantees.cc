@@ -306,6 +306,13 @@ std::vector<GuaranteeViolation> check_guarantees(const GuaranteeBaseline& b,
                                      : GuaranteeViolation::Kind::kInverted,
                        static_cast<CellType>(type), 0, GuaranteeMeasure::kMeanRatio,
                        static_cast<double>(k.before), static_cast<double>(k.after), k.first_new});
+  if (options.tangled_inversions_only &&
+      std::find(b.input.inverted.begin(), b.input.inverted.end(), 1) != b.input.inverted.end())
+    out.erase(std::remove_if(out.begin(), out.end(),
+                             [](const GuaranteeViolation& v) {
+                               return v.kind != GuaranteeViolation::Kind::kInverted;
+                             }),
+              out.end());
   return out;
 }
 

@@ -91,6 +91,9 @@ struct GuaranteeOptions {
   // guard_violators: a fallen mean holds the cells that lost most until their losses add up to
   // mean_cover times the mean's deficit (times the cell count).
   double mean_cover = 2;
+  // check_guarantees: when the input has inverted cells, only new inversions count (the input
+  // is untangled, and what that costs the valid cells is its price). tmop_optimize's check.
+  bool tangled_inversions_only = false;
 };
 
 // One broken guarantee: what got worse, where, by how much, and a cell that shows it.

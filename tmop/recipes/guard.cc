@@ -11,13 +11,15 @@ namespace {
 // The sum over the per-type mean groups of their cells' measures: which of two results that
 // keep every guarantee is better by quality (the guarantees compare groups one by one).
 double guarantee_score(const GuaranteeBaseline& baseline, const GuaranteeValues& values) {
+  // The measures with a guaranteed mean, over the cells in a group (valid in the input).
   double score = 0;
-  for (const GuaranteeBaseline::Group& g : baseline.mean_groups)
-    for (std::size_t c = 0; c < values.cell.size(); ++c)
-      if (baseline.cell_type[c] == g.type) {
-        const double v = values.cell[c][static_cast<int>(g.measure)];
-        if (v == v) score += v;
-      }
+  for (std::size_t c = 0; c < values.cell.size(); ++c)
+    for (int m = 0; m < kNumGuaranteeMeasures; ++m) {
+      const double v = values.cell[c][m];
+      if (baseline.cell_group[c][m] >= 0 &&
+          guarantee_measure_has_mean(static_cast<GuaranteeMeasure>(m)) && v == v)
+        score += v;
+    }
   return score;
 }
 

@@ -313,7 +313,8 @@ int find_violators(const Mesh& mesh, const std::vector<QuadraticCellMeasures>& m
     g.tolerance = tol;
     g.means = options.guard_means;
     const GuaranteeValues values = guarantee_values(mesh, threads);
-    for (int c : guard_violators(g0, values, g)) flag(c, "breaks a guarantee of its type or region");
+    for (int c : guard_violators(g0, values, g))
+      flag(c, "breaks a guarantee of its type or region");
   }
   return violators;
 }
@@ -400,8 +401,7 @@ void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeo
     result->stages.push_back(sr);
     std::vector<char> violates;
     std::string first;
-    const int violators =
-        find_violators(*mesh, m0, b0, g0, options, &violates, &first);
+    const int violators = find_violators(*mesh, m0, b0, g0, options, &violates, &first);
     if (violators == 0) return;
     int newly_fixed = 0;
     for (int c = 0; c < mesh->num_cells(); ++c) {

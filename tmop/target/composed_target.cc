@@ -9,8 +9,8 @@
 
 #include "tmop/element/shape.h"
 #include "tmop/mesh/mesh.h"
-#include "tmop/target/target.h"
 #include "tmop/target/smoothed_aspect.h"
+#include "tmop/target/target.h"
 #include "tmop/target/target_factors.h"
 
 namespace tmop {

@@ -134,7 +134,8 @@ Status SmoothedAspect::build(const Mesh& mesh, int passes) {
     for (int lin = 0; lin < kNumCellTypes; ++lin)
       for (int v = 0; v < static_cast<int>(count[lin].size()); ++v)
         if (count[lin][v] > 1)
-          for (int k = 0; k < n2; ++k) vertex_tensor_[lin][std::size_t(v) * n2 + k] /= count[lin][v];
+          for (int k = 0; k < n2; ++k)
+            vertex_tensor_[lin][std::size_t(v) * n2 + k] /= count[lin][v];
   }
   return Status::Ok();
 }
