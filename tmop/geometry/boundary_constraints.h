@@ -33,11 +33,19 @@
 
 #include "tmop/core/status.h"
 #include "tmop/geometry/boundary_classification.h"
-#include "tmop/geometry/geometry_manifold.h"
-#include "tmop/geometry/geometry_source.h"
+#include "tmop/geometry/geometry_frame.h"
 #include "tmop/mesh/mesh.h"
 
+// Forward declarations keep Ceres out of the public headers (tmop.h compiles without Ceres,
+// glog or gflags include paths); callers of manifold() / geometry() include
+// geometry/geometry_manifold.h.
+namespace ceres {
+class Manifold;
+}  // namespace ceres
+
 namespace tmop {
+
+class GeometryManifold;  // geometry/geometry_manifold.h
 
 struct BoundaryOptions {
   // Let boundary vertices slide on their curves / surfaces (true) or fix them all (false).

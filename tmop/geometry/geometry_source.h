@@ -17,6 +17,7 @@
 #include <string>
 
 #include "tmop/core/status.h"
+#include "tmop/geometry/geometry_frame.h"
 #include "tmop/geometry/geometry_manifold.h"
 
 namespace tmop {
@@ -27,15 +28,6 @@ struct GeometrySource {
   GeometrySourceKind kind = GeometrySourceKind::kOwnBoundary;
   std::unique_ptr<GeometryManifold> surface;  // analytic or the file's triangles; else null
   std::string description;                    // for reports: "own boundary", "sphere", PATH
-};
-
-// The geometry in the coordinates x' = R (x - centre) / length (centre[3], length > 0, R a
-// rotation, row-major) of a mesh that the optimizer normalised; the spec's numbers and the file
-// are in the user's units.
-struct GeometryFrame {
-  double centre[3] = {0, 0, 0};
-  double length = 1;
-  double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
 };
 
 Status load_geometry_source(const std::string& spec, GeometrySource* out,

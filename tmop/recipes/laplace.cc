@@ -7,6 +7,7 @@
 
 #include "tmop/element/ideal_element.h"
 #include "tmop/element/shape.h"
+#include "tmop/geometry/geometry_manifold.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/metric/small_matrix.h"
 #include "tmop/optimize/stage.h"

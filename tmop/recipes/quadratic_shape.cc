@@ -13,6 +13,7 @@
 
 #include "tmop/element/sample_points.h"
 #include "tmop/element/shape.h"
+#include "tmop/geometry/geometry_manifold.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/cell_quality.h"
 #include "tmop/quality/guarantees.h"
