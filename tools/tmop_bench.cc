@@ -72,6 +72,8 @@
 DEFINE_string(input, "", "Input mesh (any format read_mesh reads).");
 DEFINE_string(task, "shape", "read, quality, shape, untangle, evaluate, floor or perturb.");
 DEFINE_int32(threads, 0, "Threads for Ceres (0 = all hardware threads). floor is one thread.");
+DEFINE_int32(part_size, -1,
+             "Partitioned stages: elements per part; 0: one problem; -1: the default.");
 DEFINE_int32(repeat, 1, "Run the task this many times; times are reported per run.");
 DEFINE_string(json, "", "Also write the JSON record to this file.");
 DEFINE_string(reference, "", "Reference mesh: targets are its Jacobians (--target=reference).");
@@ -292,6 +294,7 @@ tmop::SolverOptions solver_options(const Context& ctx) {
   so.max_iterations = FLAGS_max_iterations;
   so.max_seconds = FLAGS_max_seconds;
   so.threads = ctx.threads;
+  if (FLAGS_part_size >= 0) so.part_size = FLAGS_part_size;
   so.verbose = FLAGS_verbose;
   tmop::linear_solver_from_name(FLAGS_linear_solver, &so.linear_solver);
   tmop::solver_method_from_name(FLAGS_solver, &so.method);

@@ -113,6 +113,11 @@ DEFINE_double(function_tolerance, 1e-5,
               "of itself (1e-5: within ~1e-4 of the converged objective; 1e-7 polishes the worst "
               "elements further at 2-3x the iterations).");
 DEFINE_int32(threads, 0, "Threads for evaluation and linear algebra (0 = all cores).");
+DEFINE_int32(part_size, -1,
+             "Partitioned shape stages: elements per part (METIS), parts solved side by side "
+             "on --threads; 0: one problem over the whole mesh; -1: the library's default "
+             "(docs/partitioning.md).");
+DEFINE_int32(part_sweeps, 4, "Partitioned stages: at most this many sweeps over the parts.");
 DEFINE_string(report, "", "Write a JSON report of the run to this file.");
 DEFINE_bool(binary, false, "Write binary output where the format has a binary form.");
 DEFINE_string(msh_version, "4.1",
@@ -275,6 +280,8 @@ int main(int argc, char** argv) {
   if (!(FLAGS_function_tolerance >= 0)) return fail(2, "--function_tolerance must be >= 0");
   if (!(FLAGS_layer_edge_ratio >= 0)) return fail(2, "--layer_edge_ratio must be >= 0");
   if (FLAGS_threads < 0) return fail(2, "--threads must be >= 0 (0: all cores)");
+  if (FLAGS_part_size < -1) return fail(2, "--part_size must be >= 0 (0: one problem)");
+  if (FLAGS_part_sweeps < 1) return fail(2, "--part_sweeps must be >= 1");
   if (!(FLAGS_power >= 1 || FLAGS_power == 0)) return fail(2, "--power must be >= 1 (or 0)");
   if (!(FLAGS_feature_angle > 0 && FLAGS_feature_angle < 180))
     return fail(2, "--feature_angle must be in (0, 180) degrees");
@@ -353,6 +360,8 @@ int main(int argc, char** argv) {
   opt.solver.max_seconds = FLAGS_max_seconds;
   opt.solver.function_tolerance = FLAGS_function_tolerance;
   opt.solver.threads = FLAGS_threads;
+  if (FLAGS_part_size >= 0) opt.solver.part_size = FLAGS_part_size;
+  opt.solver.max_sweeps = FLAGS_part_sweeps;
   opt.solver.verbose = FLAGS_verbose;
   opt.slide = slide;
   opt.boundary.geometry = FLAGS_geometry;

@@ -89,6 +89,17 @@ struct SolverOptions {
   // Stop when no vertex moves by more than this fraction of its shortest incident edge.
   double movement_tolerance = 1e-9;
 
+  // Partitioned stages (DESIGN.md section 12, optimize/partitioned_stage.h): a shape stage on a
+  // volume or planar mesh of at least 2 x part_size elements is solved as METIS parts of about
+  // part_size elements, side by side on `threads` workers (one Ceres problem of one thread
+  // each, the cut vertices held), then the cuts in the parts of a second partition whose cuts
+  // avoid the first's, in sweeps until a sweep lowers the solver's objective by less than
+  // sweep_tolerance of itself or max_sweeps were made. 0: one problem over the whole mesh.
+  // Untangling and surface stages always solve one problem.
+  int part_size = 0;
+  int max_sweeps = 4;
+  double sweep_tolerance = 5e-3;
+
   int threads = 0;  // 0: all hardware threads
   // Called after every iteration (also iteration 0) when set; verbose prints a line to stderr.
   // Without either, the per-iteration history records the solver's objective only (the

@@ -111,6 +111,9 @@ struct StageResult {
   double min_quality_before = 0, min_quality_after = 0;
   int num_elements = 0, num_sample_points = 0, num_free_vertices = 0;
   std::string linear_solver;
+  // Partitioned stages (SolverOptions::part_size): the parts of the first partition, the
+  // sweeps made; 0 for one problem.
+  int parts = 0, sweeps = 0;
   int solves = 0;  // Ceres solves (1, or the surface frame rounds or untangling rounds)
   double min_det_before = 0, min_det_after = 0;  // min det T over sample points (term 0)
   double final_eps = 0;                          // untangling: eps of the last solve

@@ -1,0 +1,111 @@
+// Partitioned stages (SolverOptions::part_size, optimize/partitioned_stage.h) against the
+// one-problem solve of the same stage: the same objective to within 0.5 %, never inverted,
+// fixed vertices keep their bits, and the result does not depend on the number of threads.
+#include "tmop/optimize/partitioned_stage.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "grid_meshes.h"
+#include "tmop/mesh/topology.h"
+#include "tmop/optimize/stage.h"
+#include "tmop/recipes/improve_shape.h"
+
+namespace tmop {
+namespace {
+
+using testing_grid::grid;
+using testing_grid::perturb;
+
+struct Case {
+  CellType type;
+  int n, part_size;
+};
+
+class PartitionedStage : public ::testing::TestWithParam<Case> {
+ protected:
+  static Mesh input(const Case& k) {
+    Mesh mesh = grid(k.type, k.n);
+    std::mt19937 rng(7);
+    perturb(&mesh, k.n, 0.4, &rng);
+    return mesh;
+  }
+  static RecipeResult run(Mesh* mesh, int part_size, int threads) {
+    ShapeOptions opt;
+    opt.solver.part_size = part_size;
+    opt.solver.threads = threads;
+    RecipeResult result;
+    EXPECT_TRUE(improve_shape(mesh, opt, &result).ok());
+    return result;
+  }
+};
+
+TEST_P(PartitionedStage, MatchesTheOneProblemSolve) {
+  const Case k = GetParam();
+  const Mesh start = input(k);
+  Mesh whole = start, parts = start;
+  const RecipeResult one = run(&whole, 0, 2);
+  const RecipeResult many = run(&parts, k.part_size, 2);
+  ASSERT_FALSE(one.stages.empty());
+  ASSERT_FALSE(many.stages.empty());
+  const StageResult& a = one.stages.front();
+  const StageResult& b = many.stages.front();
+  EXPECT_EQ(a.parts, 0);
+  EXPECT_GE(b.parts, 4) << b.termination;
+  EXPECT_GE(b.sweeps, 1);
+  EXPECT_EQ(b.inverted_after, 0);
+  EXPECT_LT(b.final_objective, b.initial_objective);
+  EXPECT_LE(std::abs(b.final_objective - a.final_objective), 5e-3 * a.final_objective)
+      << a.final_objective << " vs " << b.final_objective;
+  EXPECT_GE(b.min_quality_after, 0.95 * a.min_quality_after);
+  EXPECT_EQ(measure_mesh(parts, SampleRule::kCorners).inverted, 0);
+  // The boundary is fixed: its vertices keep their bits.
+  const std::vector<char> boundary = boundary_vertex_mask(start);
+  int moved = 0;
+  for (int v = 0; v < start.num_vertices(); ++v) {
+    bool same = true;
+    for (int x = 0; x < start.space_dim; ++x) same &= parts.vertex(v)[x] == start.vertex(v)[x];
+    if (boundary[v]) {
+      EXPECT_TRUE(same) << "boundary vertex " << v << " moved";
+    }
+    moved += !same;
+  }
+  EXPECT_GT(moved, 0);
+}
+
+TEST_P(PartitionedStage, TheThreadsDoNotChangeTheResult) {
+  const Case k = GetParam();
+  Mesh one = input(k), two = one;
+  run(&one, k.part_size, 1);
+  run(&two, k.part_size, 2);
+  EXPECT_EQ(one.coords, two.coords);
+}
+
+INSTANTIATE_TEST_SUITE_P(Types, PartitionedStage,
+                         ::testing::Values(Case{CellType::kTri3, 40, 400},
+                                           Case{CellType::kQuad4, 40, 200},
+                                           Case{CellType::kTet4, 9, 600},
+                                           Case{CellType::kHex8, 10, 150}),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return std::string(cell_info(info.param.type).name);
+                         });
+
+TEST(PartitionedStage, OnlyShapeStagesOfLargeEnoughMeshes) {
+  const Mesh mesh = grid(CellType::kTet4, 4);  // 384 tets
+  StageSpec spec;
+  spec.solver.part_size = 100;
+  EXPECT_TRUE(use_partitions(mesh, spec));
+  spec.solver.part_size = 200;
+  EXPECT_FALSE(use_partitions(mesh, spec));  // fewer than 2 parts' worth
+  spec.solver.part_size = 0;
+  EXPECT_FALSE(use_partitions(mesh, spec));
+  spec.solver.part_size = 100;
+  spec.untangle = true;
+  EXPECT_FALSE(use_partitions(mesh, spec));
+}
+
+}  // namespace
+}  // namespace tmop
