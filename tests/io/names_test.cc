@@ -168,6 +168,20 @@ TEST(PhysicalNames, BadNameLinesFailAtTheirLine) {
              "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n$Periodic\n1\n"
              "1 2 4\n1\n1 9\n$EndPeriodic\n");
   EXPECT_EQ(read_error(dir + "/g.msh"), dir + "/g.msh:12: master node tag 9 is not in $Nodes");
+  write_text(dir + "/h.msh",
+             "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1\n1 0 0 0\n$EndNodes\n$Periodic\n1\n"
+             "1 2 4\n2000000000\n1 1\n$EndPeriodic\n");
+  EXPECT_NE(
+      read_error(dir + "/h.msh").find("/h.msh:11: declared periodic node pair count 2000000000"),
+      std::string::npos)
+      << read_error(dir + "/h.msh");
+  write_text(dir + "/i.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Periodic\n0\n$EndPeriodic\n");
+  EXPECT_EQ(read_error(dir + "/i.msh"), dir + "/i.msh:4: $Periodic before $Nodes");
+  write_text(dir + "/j.msh",
+             "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1 1 1\n0 1 0 1\n1\n0 0 0\n"
+             "$EndNodes\n$Periodic\n1\n0 1 2\n3 1 0 0\n1\n1 1\n$EndPeriodic\n");
+  EXPECT_EQ(read_error(dir + "/j.msh"),
+            dir + "/j.msh:13: a periodic link has 0 or 16 affine values, not 3");
 }
 
 TEST(PhysicalNames, NamesGmshCannotReadAreRefused) {
