@@ -8,7 +8,7 @@
   names_check.py names FILE...    print "FILE<TAB>name|name|..." (sorted) as the format's
                                   client reads it: .msh the Gmsh API, .vtu meshio's field_data
                                   (and VTK's field data when python3-vtk9 is there: both must
-                                  agree), .exo netCDF4's eb_names, .su2 the MARKER_TAG lines of
+                                  agree), .vtk VTK's field data (meshio 5 does not keep it), .exo netCDF4's eb_names, .su2 the MARKER_TAG lines of
                                   a file meshio parses (meshio keeps no marker names), .cgns
                                   the element section names (other than tmop's Region_R_TYPE)
                                   of the first zone through h5py
@@ -32,7 +32,12 @@ def vtu_names(path):
         import vtk
     except ImportError:
         return names
-    r = vtk.vtkXMLUnstructuredGridReader()
+    if path.endswith(".vtk"):
+        # meshio 5 files dataset-level FIELD arrays of legacy files under its dataset info, not
+        # field_data: VTK alone reads the names there.
+        names = sorted(vtk_field_names(path))
+        m.field_data = {n: None for n in names}
+    r = vtk.vtkXMLUnstructuredGridReader() if path.endswith(".vtu") else vtk.vtkUnstructuredGridReader()
     r.SetFileName(path)
     r.Update()
     fd = r.GetOutput().GetFieldData()
@@ -41,10 +46,20 @@ def vtu_names(path):
         raise SystemExit("VTK reads field data %s, meshio %s" % (vnames, names))
     for i in range(fd.GetNumberOfArrays()):
         a = fd.GetArray(i)
-        if a.GetNumberOfTuples() != 2 or list(m.field_data[fd.GetArrayName(i)]) != [
-                a.GetValue(0), a.GetValue(1)]:
+        values = m.field_data[fd.GetArrayName(i)]
+        if a.GetNumberOfTuples() != 2 or (values is not None and list(values) != [
+                a.GetValue(0), a.GetValue(1)]):
             raise SystemExit("VTK and meshio disagree on " + fd.GetArrayName(i))
     return names
+
+
+def vtk_field_names(path):
+    import vtk
+    r = vtk.vtkUnstructuredGridReader()
+    r.SetFileName(path)
+    r.Update()
+    fd = r.GetOutput().GetFieldData()
+    return [fd.GetArrayName(i) for i in range(fd.GetNumberOfArrays())]
 
 
 def exo_names(path):
@@ -125,7 +140,7 @@ def main():
     if sys.argv[1] == "periodic":
         print(periodic_pairs(sys.argv[2]))
     elif sys.argv[1] == "names":
-        readers = {"msh": gmsh_names, "vtu": vtu_names, "exo": exo_names, "su2": su2_names,
+        readers = {"msh": gmsh_names, "vtu": vtu_names, "vtk": vtu_names, "exo": exo_names, "su2": su2_names,
                    "cgns": cgns_names}
         for path in sys.argv[2:]:
             names = readers[path.rsplit(".", 1)[-1]](path)
