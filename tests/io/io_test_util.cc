@@ -145,7 +145,7 @@ bool parse_dump(const std::string& text, Dump* dump, std::string* error) {
   // Skip anything before "order" (e.g. library warnings).
   while (in >> word && word != "order") {
   }
-  if (!(in >> order) || (order != "gmsh" && order != "meshio")) {
+  if (!(in >> order) || (order != "gmsh" && order != "meshio" && order != "vtk")) {
     *error = "no 'order' line in dump: " + text.substr(0, 400);
     return false;
   }
@@ -180,10 +180,11 @@ bool parse_dump(const std::string& text, Dump* dump, std::string* error) {
     }
     std::int32_t file_nodes[kMaxCellNodes], nodes[kMaxCellNodes];
     for (int k = 0; k < cell_num_nodes(t); ++k) in >> file_nodes[k];
-    // meshio's own order is VTK's, except wedges, which meshio keeps in Gmsh order.
+    // meshio's own order is VTK's, except wedges, which meshio keeps in Gmsh order; "vtk" is
+    // VTK's for every type (SU2 files).
     const int* p = io::gmsh_index_of_vtk_node(t);
     for (int k = 0; k < cell_num_nodes(t); ++k) {
-      if (order == "meshio" && t != CellType::kWedge6)
+      if (order == "vtk" || (order == "meshio" && t != CellType::kWedge6))
         nodes[p[k]] = file_nodes[k];
       else
         nodes[k] = file_nodes[k];

@@ -10,6 +10,10 @@
   mesh_dump.py meshio-write-exodus DIR
                                   write a.exo with meshio (every type both know) into DIR,
                                   with a.exo.expected
+  mesh_dump.py meshio-write-su2 DIR
+                                  write a2.su2 (2D: triangles, quads, boundary lines) and a3.su2
+                                  (3D: every linear volume type, boundary triangles and quads)
+                                  with meshio into DIR, each with NAME.expected
   mesh_dump.py cgns-h5 FILE...    dump each CGNS/HDF5 FILE as read node by node with h5py (the
                                   SIDS layout: first base, first zone, its Elements_t nodes)
                                   into FILE.cgns-h5.dump
@@ -17,8 +21,9 @@
                                   with a NAME.expected dump of what was written
 
 The canonical dump (parsed by io_test_util.cc):
-  order gmsh|meshio     node order of the cells below (meshio's own order is VTK's except for
-                        wedges, which it keeps in Gmsh order)
+  order gmsh|meshio|vtk node order of the cells below (meshio's own order is VTK's except for
+                        wedges, which it keeps in Gmsh order; SU2 files hold VTK's order for
+                        every type, and meshio passes it through: "vtk")
   points N              then N lines "x y z" (repr: shortest exact form)
   cells M               then M lines "TYPE REGION n0 n1 ..." (tmop type names, 0-based nodes)
 REGION is the Gmsh physical tag (first physical group of the element's entity) or, for meshio,
@@ -80,7 +85,7 @@ def meshio_cells(mesh, from_msh=False):
     cells = []
     for i, block in enumerate(mesh.cells):
         region = None
-        for key in ("gmsh:physical", "medit:ref", "ugrid:ref", "CellEntityIds"):
+        for key in ("gmsh:physical", "medit:ref", "ugrid:ref", "CellEntityIds", "su2:tag"):
             if key in mesh.cell_data:
                 region = mesh.cell_data[key][i]
                 break
@@ -99,7 +104,8 @@ def dump_meshio(path):
     # (KeyError on every file holding one); the entry is all that is missing.
     meshio._mesh.topological_dimension.setdefault("wedge15", 3)
     mesh = meshio.read(path)
-    emit("meshio", mesh.points, meshio_cells(mesh, path.endswith(".msh")), path + ".meshio.dump")
+    emit("vtk" if path.endswith(".su2") else "meshio", mesh.points,
+         meshio_cells(mesh, path.endswith(".msh")), path + ".meshio.dump")
 
 
 def sample(types, with_quadratic):
@@ -193,6 +199,27 @@ def meshio_write_exodus(outdir):
     emit("meshio", mesh.points, meshio_cells(mesh), path + ".expected")
 
 
+def meshio_write_su2(outdir):
+    import meshio
+    import numpy as np
+    # meshio 5.0's SU2 writer unpacks cell blocks as (type, data) pairs when it writes markers,
+    # which its CellBlock does not support (TypeError): give it that form.
+    if not hasattr(meshio.CellBlock, "__iter__"):
+        meshio.CellBlock.__iter__ = lambda self: iter((self.type, self.data))
+    for name, types, boundary, dim in (
+            ("a2.su2", ["triangle", "quad", "line"], ("line",), 2),
+            ("a3.su2", ["tetra", "hexahedron", "wedge", "pyramid", "triangle", "quad"],
+             ("triangle", "quad"), 3)):
+        points, cells, phys, _ = sample(types, False)
+        points = points[:, :dim]
+        # SU2 tags boundary cells only (MARKER_TAG= the number); element cells read back as 0.
+        tags = [p if t in boundary else np.zeros(2, dtype=int) for t, p in zip(types, phys)]
+        mesh = meshio.Mesh(points, cells, cell_data={"su2:tag": tags})
+        path = outdir + "/" + name
+        meshio.su2.write(path, mesh)
+        emit("vtk", mesh.points, meshio_cells(mesh), path + ".expected")
+
+
 CGNS_TYPES = {2: "vertex", 3: "line2", 4: "line3", 5: "tri3", 6: "tri6", 7: "quad4", 9: "quad9",
               10: "tet4", 11: "tet10", 12: "pyramid5", 14: "wedge6", 17: "hex8"}
 
@@ -224,6 +251,7 @@ def dump_cgns_h5(path):
 if __name__ == "__main__":
     if len(sys.argv) < 3 or sys.argv[1] not in ("gmsh", "meshio", "meshio-write",
                                                 "meshio-write-ugrid", "meshio-write-exodus",
+                                                "meshio-write-su2",
                                                 "cgns-h5"):
         sys.exit(__doc__)
     if sys.argv[1] == "cgns-h5":
@@ -231,6 +259,8 @@ if __name__ == "__main__":
             dump_cgns_h5(f)
     elif sys.argv[1] == "meshio-write-exodus":
         meshio_write_exodus(sys.argv[2])
+    elif sys.argv[1] == "meshio-write-su2":
+        meshio_write_su2(sys.argv[2])
     elif sys.argv[1] == "meshio-write-ugrid":
         meshio_write_ugrid(sys.argv[2])
     elif sys.argv[1] == "meshio-write":

@@ -7,10 +7,14 @@
 // of zone k - 1; zones are not glued at shared points); structured zones are refused. Every
 // element section becomes cells; MIXED sections (the CGNS 3.x layout: type, nodes, type, ...)
 // are split per element. Regions: a section named "Region_R_..." (tmop's own) gives region R,
-// any other section its 1-based section number. Boundary conditions and flow solutions are
-// not read.
+// any other section the number in its Descriptor "tmop_region" (tmop's named sections) or else
+// its 1-based section number; such a section's name is the physical name of (dimension of its
+// cells, region) (Mesh::physical_names). Boundary conditions and flow solutions are not read.
 // Write: one base "Base", one zone "Zone1", one section per (region, type), named
-// "Region_R_TYPE", element numbers 1..N in section order; coordinates as RealDouble.
+// "Region_R_TYPE", element numbers 1..N in section order; coordinates as RealDouble. A region
+// with a physical name whose cells are of one type is one section named by it instead (CGNS node
+// names: 1 to 32 characters, no '/'; the first of equal names only), with the region in a
+// Descriptor "tmop_region"; other names are not written.
 //
 // Types and node order (CGNS SIDS, "Unstructured Grid Element Numbering Conventions"): NODE,
 // BAR_2, BAR_3, TRI_3, TRI_6, QUAD_4, QUAD_9, TETRA_4, PYRA_5, PENTA_6, HEXA_8 in Gmsh's order;
@@ -19,6 +23,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "tmop/io/atomic_file.h"
@@ -89,11 +94,24 @@ struct CgFile {
   throw Error(path + ": " + what + (msg.empty() ? "" : " (" + msg + ")"));
 }
 
-int region_of(const char* name, int section) {
-  int r = 0;
+bool tmop_section_name(const char* name, int* region) {
   char rest[64];
-  if (std::sscanf(name, "Region_%d_%63s", &r, rest) == 2) return r;
-  return section;
+  return std::sscanf(name, "Region_%d_%63s", region, rest) == 2;
+}
+
+// A named section's region: its "tmop_region" descriptor, else its number S.
+int named_section_region(int fn, int Z, int S) {
+  int n = 0, region = S;
+  if (cg_goto(fn, 1, "Zone_t", Z, "Elements_t", S, "end") != CG_OK || cg_ndescriptors(&n) != CG_OK)
+    return region;
+  for (int d = 1; d <= n; ++d) {
+    char name[64] = {0};
+    char* text = nullptr;
+    if (cg_descriptor_read(d, name, &text) != CG_OK) continue;
+    if (std::strcmp(name, "tmop_region") == 0 && text) std::sscanf(text, "%d", &region);
+    if (text) cg_free(text);
+  }
+  return region;
 }
 
 // Adds the cells of section S of zone Z (vertices offset by base, nv of them).
@@ -112,7 +130,9 @@ void read_section(const std::string& path, int fn, int Z, int S, cgsize_t base, 
   std::vector<cgsize_t> data(static_cast<std::size_t>(size));
   if (size > 0 && cg_elements_read(fn, 1, Z, S, data.data(), nullptr) != CG_OK)
     cg_fail(path, "cannot read element section " + std::to_string(S));
-  const int region = region_of(name, S);
+  int region = 0;
+  const bool named = !tmop_section_name(name, &region);
+  if (named) region = named_section_region(fn, Z, S);
   const bool mixed = type == CGNS_ENUMV(MIXED);
   std::int32_t nodes[kMaxCellNodes];
   for (std::size_t p = 0; p < data.size();) {
@@ -133,6 +153,8 @@ void read_section(const std::string& path, int fn, int Z, int S, cgsize_t base, 
     p += nn;
     mesh->add_cell(t, nodes, region, 0);
   }
+  if (named && !data.empty())
+    mesh->set_physical_name(cell_dim(mesh->cell_types.back()), region, name);
 }
 
 void read_zone(const std::string& path, int fn, int Z, std::uint64_t file_size, Mesh* mesh) {
@@ -197,6 +219,23 @@ void check_cgns_writable(const Mesh& mesh) {
 
 namespace {
 
+// The physical name of the section's region when it can name the section: the region's only
+// section, a valid CGNS node name not taken yet and not of tmop's own Region_ form; otherwise
+// "Region_R_TYPE".
+std::string section_name(const Mesh& mesh, const std::vector<std::pair<int, CellType> >& keys,
+                         const std::pair<int, CellType>& k, std::vector<std::string>* used) {
+  const std::string plain = "Region_" + std::to_string(k.first) + "_" + cell_name(k.second);
+  const std::string* name = mesh.physical_name(cell_dim(k.second), k.first);
+  int sections = 0;
+  for (const auto& o : keys) sections += o.first == k.first;
+  if (!name || sections != 1 || name->empty() || name->size() > 32 ||
+      name->find('/') != std::string::npos || name->compare(0, 7, "Region_") == 0 ||
+      std::find(used->begin(), used->end(), *name) != used->end())
+    return plain;
+  used->push_back(*name);
+  return *name;
+}
+
 void write_sections(const std::string& path, int fn, int Z, const Mesh& mesh) {
   // (region, type) in order of first appearance.
   std::vector<std::pair<int, CellType> > keys;
@@ -205,6 +244,7 @@ void write_sections(const std::string& path, int fn, int Z, const Mesh& mesh) {
     if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
   }
   cgsize_t next = 1;
+  std::vector<std::string> used;
   for (const auto& k : keys) {
     const int nn = cell_num_nodes(k.second);
     std::vector<cgsize_t> conn;
@@ -217,12 +257,16 @@ void write_sections(const std::string& path, int fn, int Z, const Mesh& mesh) {
     const cgsize_t count = static_cast<cgsize_t>(conn.size() / nn);
     CGNS_ENUMT(ElementType_t) cg = CGNS_ENUMV(ElementTypeNull);
     to_cgns(k.second, &cg);
-    const std::string name = "Region_" + std::to_string(k.first) + "_" + cell_name(k.second);
+    const std::string name = section_name(mesh, keys, k, &used);
     int S = 0;
     if (cg_section_write(fn, 1, Z, name.c_str(), cg, next, next + count - 1, 0, conn.data(), &S) !=
         CG_OK)
       cg_fail(path, "cannot write section " + name);
     next += count;
+    if (name.compare(0, 7, "Region_") == 0) continue;
+    if (cg_goto(fn, 1, "Zone_t", Z, "Elements_t", S, "end") != CG_OK ||
+        cg_descriptor_write("tmop_region", std::to_string(k.first).c_str()) != CG_OK)
+      cg_fail(path, "cannot write the region of section " + name);
   }
 }
 

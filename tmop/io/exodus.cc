@@ -5,7 +5,10 @@
 //
 // Element blocks <-> cells: one block per (region, type) on write, block id = the region when
 // that id is still free (otherwise the next free id), so Mesh::cell_region = block id on read.
-// Block names, node sets, side sets and variables are not read or written.
+// Block names <-> Mesh::physical_names: a block is named by the physical name of its (dimension,
+// region); on read a named block names (dimension of its type, block id). Names are stored up
+// to 255 characters (ex_set_max_name_length). Node sets, side sets and variables are not read
+// or written.
 //
 // Types and node order (Exodus II manual, "element types"): BAR2/BEAM2/TRUSS2 line2, BEAM3 (read
 // also BAR3, TRUSS3: meshio 5 knows only BEAM3) line3,
@@ -19,6 +22,7 @@
 #include <cctype>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "tmop/io/atomic_file.h"
@@ -109,6 +113,22 @@ struct ExoFile {
   }
 };
 
+constexpr int kMaxName = 255;
+
+// The names of the nb element blocks in id order ("" when unnamed or unreadable).
+std::vector<std::string> block_names(int exo, int nb) {
+  std::vector<std::string> out(nb);
+  const int len = static_cast<int>(ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH));
+  if (nb == 0 || len <= 0 || len > kMaxName) return out;
+  ex_set_max_name_length(exo, len);
+  std::vector<std::vector<char> > buf(nb, std::vector<char>(len + 1, '\0'));
+  std::vector<char*> ptr(nb);
+  for (int b = 0; b < nb; ++b) ptr[b] = buf[b].data();
+  if (ex_get_names(exo, EX_ELEM_BLOCK, ptr.data()) < 0) return out;
+  for (int b = 0; b < nb; ++b) out[b] = std::string(buf[b].data());
+  return out;
+}
+
 }  // namespace
 
 void read_exodus(const std::string& path, Mesh* mesh) {
@@ -147,7 +167,9 @@ void read_exodus(const std::string& path, Mesh* mesh) {
   std::vector<int> ids(nb);
   if (nb > 0 && ex_get_ids(f.id, EX_ELEM_BLOCK, ids.data()) < 0)
     throw Error(path + ": cannot read the Exodus II element block ids");
-  for (int id : ids) {
+  const std::vector<std::string> names = block_names(f.id, nb);
+  for (std::size_t b = 0; b < ids.size(); ++b) {
+    const int id = ids[b];
     char type[MAX_STR_LENGTH + 1] = {0};
     int count = 0, npe = 0, edges = 0, faces = 0, attrs = 0;
     if (ex_get_block(f.id, EX_ELEM_BLOCK, id, type, &count, &npe, &edges, &faces, &attrs) < 0)
@@ -175,6 +197,7 @@ void read_exodus(const std::string& path, Mesh* mesh) {
       }
       mesh->add_cell(t, nodes, id, 0);
     }
+    if (!names[b].empty()) mesh->set_physical_name(cell_dim(t), id, names[b]);
   }
 }
 
@@ -217,7 +240,8 @@ std::vector<OutBlock> make_blocks(const Mesh& mesh) {
 }
 
 void write_blocks(const std::string& path, int exo, const Mesh& mesh) {
-  for (const OutBlock& b : make_blocks(mesh)) {
+  const std::vector<OutBlock> blocks = make_blocks(mesh);
+  for (const OutBlock& b : blocks) {
     const int npe = cell_num_nodes(b.type);
     if (ex_put_block(exo, EX_ELEM_BLOCK, b.id, exo_name(b.type),
                      static_cast<std::int64_t>(b.cells.size()), npe, 0, 0, 0) < 0)
@@ -230,6 +254,17 @@ void write_blocks(const std::string& path, int exo, const Mesh& mesh) {
       throw Error(path + ": cannot write the connectivity of element block " +
                   std::to_string(b.id));
   }
+  std::vector<std::string> names;
+  for (const OutBlock& b : blocks) {
+    const std::string* name = mesh.physical_name(cell_dim(b.type), mesh.cell_region[b.cells[0]]);
+    names.push_back(name ? name->substr(0, kMaxName) : std::string());
+  }
+  if (std::all_of(names.begin(), names.end(), [](const std::string& n) { return n.empty(); }))
+    return;
+  std::vector<char*> ptr;
+  for (std::string& n : names) ptr.push_back(&n[0]);
+  if (ex_put_names(exo, EX_ELEM_BLOCK, ptr.data()) < 0)
+    throw Error(path + ": cannot write the Exodus II block names");
 }
 
 }  // namespace
@@ -244,6 +279,7 @@ void write_exodus(const std::string& path, const Mesh& mesh) {
     ExoFile f;
     f.id = ex_create(tmp.name().c_str(), EX_CLOBBER, &cpu_ws, &io_ws);
     if (f.id < 0) throw Error(path + ": cannot create the Exodus II file");
+    ex_set_max_name_length(f.id, kMaxName);  // before ex_put_init: names up to 255 characters
     const int dim = mesh.space_dim == 2 && mesh.plane_z != 0 ? 3 : mesh.space_dim;
     const int nb = static_cast<int>(make_blocks(mesh).size());
     if (ex_put_init(f.id, "tmop", dim, mesh.num_vertices(), mesh.num_cells(), nb, 0, 0) < 0)

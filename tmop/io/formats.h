@@ -18,6 +18,7 @@ namespace io {
 
 void read_msh(const std::string& path, const std::string& data, Mesh* mesh);
 void write_msh(const Mesh& mesh, const WriteOptions& options, std::string* out);
+void check_msh_writable(const Mesh& mesh);  // physical names Gmsh can read back
 
 void read_vtk(const std::string& path, const std::string& data, Mesh* mesh);
 void write_vtk(const Mesh& mesh, const WriteOptions& options, std::string* out);
@@ -29,6 +30,11 @@ void write_vtu(const Mesh& mesh, const WriteOptions& options, std::string* out);
 void read_medit(const std::string& path, const std::string& data, Mesh* mesh);
 void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out);
 void check_medit_writable(const Mesh& mesh);
+
+// SU2 .su2 (ASCII): boundary markers <-> regions and physical names of the boundary cells.
+void read_su2(const std::string& path, const std::string& data, Mesh* mesh);
+void write_su2(const Mesh& mesh, std::string* out);
+void check_su2_writable(const Mesh& mesh);
 
 // AFLR3 .ugrid; the encoding comes from the name (NAME.ugrid ASCII, NAME.b8.ugrid, .lb8, .r8,
 // .lr8 binary: ugrid.cc), not from WriteOptions.

@@ -31,13 +31,14 @@ bool is_openmesh_ext(const std::string& ext) {
   return ext == "obj" || ext == "off" || ext == "ply";
 }
 
-const char* kKnown = "known: .msh .vtk .vtu .mesh .ugrid .exo .e .cgns .obj .off .ply .stl";
+const char* kKnown = "known: .msh .vtk .vtu .mesh .ugrid .su2 .exo .e .cgns .obj .off .ply .stl";
 
 bool is_exodus_ext(const std::string& ext) { return ext == "exo" || ext == "e"; }
 
 bool is_known_ext(const std::string& ext) {
   return ext == "msh" || ext == "vtk" || ext == "vtu" || ext == "mesh" || ext == "stl" ||
-         ext == "ugrid" || ext == "cgns" || is_exodus_ext(ext) || is_openmesh_ext(ext);
+         ext == "ugrid" || ext == "su2" || ext == "cgns" || is_exodus_ext(ext) ||
+         is_openmesh_ext(ext);
 }
 
 }  // namespace
@@ -102,6 +103,7 @@ Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair) {
     if (ext == "vtu") io::read_vtu(path, data, mesh);
     if (ext == "mesh") io::read_medit(path, data, mesh);
     if (ext == "ugrid") io::read_ugrid(path, data, mesh);
+    if (ext == "su2") io::read_su2(path, data, mesh);
     if (ext == "stl") io::read_stl(path, data, mesh, repair);
     if (is_openmesh_ext(ext)) io::read_surface(path, ext, data, mesh, repair);
     io::finish_read(mesh);
@@ -148,8 +150,10 @@ void check_writable_or_throw(const std::string& path, const Mesh& mesh,
     throw Error(path + ": cannot write MSH version " + std::to_string(options.msh_version) +
                 " (22 and 41 are supported)");
   try {
+    if (ext == "msh") io::check_msh_writable(mesh);
     if (ext == "mesh") io::check_medit_writable(mesh);
     if (ext == "ugrid") io::check_ugrid_writable(path, mesh);
+    if (ext == "su2") io::check_su2_writable(mesh);
     if (is_exodus_ext(ext)) io::check_exodus_writable(mesh);
     if (ext == "cgns") io::check_cgns_writable(mesh);
     if (ext == "vtk") io::check_vtk_writable(mesh);
@@ -225,6 +229,8 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
         io::write_medit(mesh, options, &bytes);
       else if (ext == "ugrid")
         io::write_ugrid(path, mesh, &bytes);
+      else if (ext == "su2")
+        io::write_su2(mesh, &bytes);
       else
         io::write_stl(mesh, options, &bytes);
     } catch (const Error& e) {

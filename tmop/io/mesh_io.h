@@ -10,6 +10,7 @@
 //   .ugrid                AFLR3 UGRID: NAME.ugrid ASCII, NAME.b8.ugrid / NAME.lb8.ugrid C binary
 //                         big / little-endian, NAME.r8.ugrid / NAME.lr8.ugrid Fortran records
 //                         (the name picks the encoding; WriteOptions::binary is not used)
+//   .su2                  SU2 native mesh, ASCII: boundary markers as regions + physical names
 //   .exo .e               Exodus II through libexodusii, element blocks as regions (only when
 //                         tmop was built with the library; otherwise a "built without" error)
 //   .cgns                 CGNS through libcgns (the same proviso): unstructured zones, element

@@ -2,6 +2,9 @@
 // Gmsh .msh 2.2 and 4.1, ASCII and binary (reference: the "MSH file format" chapter of the Gmsh
 // manual). Node order is Gmsh's, so cells are copied as they are.
 //
+// Names and periodicity: $PhysicalNames <-> Mesh::physical_names, $Periodic <-> Mesh::periodic
+// (msh_sections.cc); both are written back in either version.
+//
 // Tags: 2.2 elements carry (physical, elementary) as their first two tags; 4.1 elements belong to
 // an entity (dim, tag) whose physical tags are listed in $Entities. Both map to
 // Mesh::cell_region (the first physical tag; 0 when none) and Mesh::cell_entity.
@@ -11,7 +14,8 @@
 // links (Gmsh accepts that). An entity tag shared by cells of different regions, and tag 0, are
 // split into fresh tags (max + 1, ...) so each entity has one physical tag; the same entity tags
 // are used for 2.2 so both versions read back identically. All nodes go in one block on the
-// first entity of the highest dimension.
+// first entity of the highest dimension. Entities that only periodic links name (the point and
+// curve entities Gmsh links in a 2D mesh) are written without cells.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,6 +25,7 @@
 #include <vector>
 
 #include "tmop/io/formats.h"
+#include "tmop/io/msh_sections.h"
 #include "tmop/io/node_map.h"
 #include "tmop/io/scanner.h"
 #include "tmop/io/text_format.h"
@@ -55,6 +60,11 @@ class MshReader {
         v4_ ? read_elements4() : read_elements2();
       } else if (t == "$Entities" && v4_) {
         read_entities();
+      } else if (t == "$PhysicalNames") {
+        read_physical_names(&s_, mesh_);
+      } else if (t == "$Periodic") {
+        if (!have_nodes) s_.fail_at(start, "$Periodic before $Nodes");
+        read_periodic(&s_, binary_, v4_, map_, mesh_);
       } else if (t.size() > 1 && t[0] == '$') {
         skip_section(t, start);
       } else {
@@ -76,6 +86,7 @@ class MshReader {
       s_.fail_at(vpos, "unsupported MSH version " + printable(version) + " (2.2 and 4.1 are)");
     }
     binary_ = s_.integer(0, 1, "file type (0 ascii, 1 binary)") == 1;
+    v_.set_binary(binary_);
     const std::size_t dpos = s_.pos();
     const std::int64_t data_size = s_.integer(0, 64, "data size");
     if (binary_ && data_size != 8)
@@ -110,39 +121,18 @@ class MshReader {
     s_.set_pos(e + end.size());
   }
 
-  // Values in the current encoding. `what` names the value for messages.
+  // Values in the current encoding (msh_sections.h). `what` names the value for messages.
   std::int64_t get_int(std::int64_t lo, std::int64_t hi, const char* what) {
-    if (!binary_) return s_.integer(lo, hi, what);
-    const std::size_t p = s_.pos();
-    const std::int64_t v = s_.binary<std::int32_t>(false, what);
-    if (v < lo || v > hi)
-      s_.fail_byte(p, std::string(what) + " " + std::to_string(v) + " out of range " +
-                          std::to_string(lo) + ".." + std::to_string(hi));
-    return v;
+    return v_.get_int(lo, hi, what);
   }
   std::int64_t get_size(std::int64_t lo, std::int64_t hi, const char* what) {
-    if (!binary_) return s_.integer(lo, hi, what);
-    const std::size_t p = s_.pos();
-    const std::uint64_t v = s_.binary<std::uint64_t>(false, what);
-    if (v < static_cast<std::uint64_t>(lo) || v > static_cast<std::uint64_t>(hi))
-      s_.fail_byte(p, std::string(what) + " " + std::to_string(v) + " out of range " +
-                          std::to_string(lo) + ".." + std::to_string(hi));
-    return static_cast<std::int64_t>(v);
+    return v_.get_size(lo, hi, what);
   }
-  double get_real(const char* what) {
-    if (!binary_) return s_.real(what);
-    const std::size_t p = s_.pos();
-    const double v = s_.binary<double>(false, what);
-    if (!std::isfinite(v)) s_.fail_byte(p, std::string(what) + " is not finite");
-    return v;
-  }
+  double get_real(const char* what) { return v_.get_real(what); }
   // Counts are written as text in 2.2 even in binary files.
   void check_count(std::int64_t n, std::size_t ascii_bytes, std::size_t binary_bytes,
                    const char* what) {
-    if (binary_)
-      s_.check_count_binary(static_cast<std::uint64_t>(n), binary_bytes, what);
-    else
-      s_.check_count(static_cast<std::uint64_t>(n), ascii_bytes, what);
+    v_.check_count(n, ascii_bytes, binary_bytes, what);
   }
 
   void add_node(std::int64_t tag) {
@@ -346,6 +336,7 @@ class MshReader {
   Mesh* mesh_;
   bool v4_ = false;
   bool binary_ = false;
+  MshValues v_{&s_, false};
   std::vector<std::int64_t> tags_;
   NodeMap map_;
   std::map<std::pair<int, int>, std::int32_t> physical_;
@@ -353,15 +344,9 @@ class MshReader {
 
 // ---- writing ------------------------------------------------------------------------------
 
-struct Entity {
-  int dim;
-  int tag;
-  std::int32_t region;
-  double lo[3], hi[3];
-};
-
-// Entity tag written for each cell, and the entity list (see the file comment).
-void assign_entities(const Mesh& mesh, std::vector<int>* cell_tag, std::vector<Entity>* entities) {
+// MshEntity tag written for each cell, and the entity list (see the file comment).
+void assign_entities(const Mesh& mesh, std::vector<int>* cell_tag,
+                     std::vector<MshEntity>* entities) {
   const int n = mesh.num_cells();
   std::map<std::pair<int, int>, std::set<std::int32_t>> regions;  // (dim, entity) -> regions
   int max_tag[4] = {0, 0, 0, 0};
@@ -393,12 +378,12 @@ void assign_entities(const Mesh& mesh, std::vector<int>* cell_tag, std::vector<E
     if (jt == index_of.end()) {
       idx = static_cast<int>(entities->size());
       index_of[{d, t}] = idx;
-      Entity ent{d, t, r, {HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
+      MshEntity ent{d, t, r, {HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
       entities->push_back(ent);
     } else {
       idx = jt->second;
     }
-    Entity& ent = (*entities)[idx];
+    MshEntity& ent = (*entities)[idx];
     const std::int32_t* nodes = mesh.cell(c);
     for (int k = 0; k < mesh.cell_size(c); ++k)
       for (int j = 0; j < 3; ++j) {
@@ -407,7 +392,7 @@ void assign_entities(const Mesh& mesh, std::vector<int>* cell_tag, std::vector<E
         ent.hi[j] = std::max(ent.hi[j], x);
       }
   }
-  std::stable_sort(entities->begin(), entities->end(), [](const Entity& a, const Entity& b) {
+  std::stable_sort(entities->begin(), entities->end(), [](const MshEntity& a, const MshEntity& b) {
     return a.dim != b.dim ? a.dim < b.dim : a.tag < b.tag;
   });
 }
@@ -415,7 +400,7 @@ void assign_entities(const Mesh& mesh, std::vector<int>* cell_tag, std::vector<E
 class MshWriter {
  public:
   MshWriter(const Mesh& mesh, const WriteOptions& options, std::string* out)
-      : mesh_(mesh), bin_(options.binary), out_(out) {}
+      : mesh_(mesh), bin_(options.binary), out_(out), e_(out, options.binary) {}
 
   void write(int version) {
     for (int c = 0; c < mesh_.num_cells(); ++c)
@@ -424,6 +409,7 @@ class MshWriter {
           throw Error("cannot write: cell " + std::to_string(c) + " refers to vertex " +
                       std::to_string(mesh_.cell(c)[k]) + " out of range");
     assign_entities(mesh_, &cell_tag_, &entities_);
+    add_periodic_entities(mesh_, &entities_);
     out_->append(version == 41 ? "$MeshFormat\n4.1 " : "$MeshFormat\n2.2 ");
     out_->append(bin_ ? "1 8\n" : "0 8\n");
     if (bin_) {
@@ -431,6 +417,7 @@ class MshWriter {
       out_->append("\n");
     }
     out_->append("$EndMeshFormat\n");
+    write_physical_names(mesh_, out_);
     if (version == 41) {
       write_entities();
       write_nodes4();
@@ -439,44 +426,22 @@ class MshWriter {
       write_nodes2();
       write_elements2();
     }
+    write_periodic(mesh_, version, &e_);
   }
 
  private:
-  void sz(std::uint64_t v, char sep = ' ') {
-    if (bin_) {
-      append_binary<std::uint64_t>(out_, v);
-    } else {
-      append_int(out_, static_cast<std::int64_t>(v));
-      out_->push_back(sep);
-    }
-  }
-  void i32(std::int64_t v, char sep = ' ') {
-    if (bin_) {
-      append_binary<std::int32_t>(out_, static_cast<std::int32_t>(v));
-    } else {
-      append_int(out_, v);
-      out_->push_back(sep);
-    }
-  }
-  void real(double v, char sep = ' ') {
-    if (bin_) {
-      append_binary<double>(out_, v);
-    } else {
-      append_double(out_, v);
-      out_->push_back(sep);
-    }
-  }
-  void end_line() {
-    if (!bin_ && !out_->empty() && out_->back() == ' ') out_->back() = '\n';
-  }
+  void sz(std::uint64_t v) { e_.sz(v); }
+  void i32(std::int64_t v) { e_.i32(v); }
+  void real(double v) { e_.real(v); }
+  void end_line() { e_.end_line(); }
 
   void write_entities() {
     std::uint64_t count[4] = {0, 0, 0, 0};
-    for (const Entity& e : entities_) ++count[e.dim];
+    for (const MshEntity& e : entities_) ++count[e.dim];
     out_->append("$Entities\n");
     for (int d = 0; d < 4; ++d) sz(count[d]);
     end_line();
-    for (const Entity& e : entities_) {
+    for (const MshEntity& e : entities_) {
       i32(e.tag);
       if (e.dim == 0) {
         for (int j = 0; j < 3; ++j) real(e.lo[j]);
@@ -500,7 +465,7 @@ class MshWriter {
   void write_nodes4() {
     const std::uint64_t n = static_cast<std::uint64_t>(mesh_.num_vertices());
     int dim = 0, tag = 0;
-    for (const Entity& e : entities_)  // sorted by dim: the first entity of the highest dim
+    for (const MshEntity& e : entities_)  // sorted by dim: the first entity of the highest dim
       if (tag == 0 || e.dim > dim) {
         dim = e.dim;
         tag = e.tag;
@@ -612,8 +577,9 @@ class MshWriter {
   const Mesh& mesh_;
   bool bin_;
   std::string* out_;
+  MshEmitter e_;
   std::vector<int> cell_tag_;
-  std::vector<Entity> entities_;
+  std::vector<MshEntity> entities_;
 };
 
 }  // namespace
@@ -623,6 +589,8 @@ void read_msh(const std::string& path, const std::string& data, Mesh* mesh) {
   MshReader(path, data, mesh).read();
 }
 
+void check_msh_writable(const Mesh& mesh) { check_msh_names_writable(mesh); }
+
 void write_msh(const Mesh& mesh, const WriteOptions& options, std::string* out) {
   if (options.msh_version != 41 && options.msh_version != 22)
     throw Error("cannot write MSH version " + std::to_string(options.msh_version) +
@@ -630,6 +598,7 @@ void write_msh(const Mesh& mesh, const WriteOptions& options, std::string* out) 
   if (mesh.cell_region.size() != mesh.cell_types.size() ||
       mesh.cell_entity.size() != mesh.cell_types.size())
     throw Error("cannot write: cell_region / cell_entity sizes differ from the cell count");
+  check_msh_names_writable(mesh);
   MshWriter(mesh, options, out).write(options.msh_version);
 }
 

@@ -4,10 +4,9 @@
 // cell layouts: "CELLS n size" with [npts, ids...] rows (versions <= 4.2) and "CELLS nOffsets
 // nConn" + OFFSETS / CONNECTIVITY arrays (version 5.1, what meshio writes). Attributes read:
 // SCALARS (1-4 components, LOOKUP_TABLE line), VECTORS, NORMALS, TENSORS and FIELD arrays, into
-// Mesh::point_data / cell_data; tag arrays per vtk_common.h. Writes version 3.0 with the old CELLS
-// layout (readable by every VTK-based tool), Float64 points, tags as SCALARS int arrays and fields
-// as SCALARS / VECTORS / FIELD. Node order converted by node_order.h. Array names with spaces are
-// written with "%20", as VTK does.
+// Mesh::point_data / cell_data; tag arrays and dataset-level FIELD names per vtk_common.h. The
+// writer is vtk_write.cc. Node order converted by node_order.h. Array names are read with VTK's
+// "%XX" decoding.
 #include <cmath>
 #include <limits>
 
@@ -55,22 +54,6 @@ std::string decode_name(std::string_view n) {
   return out;
 }
 
-std::string encode_name(const std::string& n) {
-  static const char* kHex = "0123456789ABCDEF";
-  std::string out;
-  for (char ch : n) {
-    const unsigned char c = static_cast<unsigned char>(ch);
-    if (c <= 32 || c >= 127 || c == '%' || c == '"') {
-      out.push_back('%');
-      out.push_back(kHex[c >> 4]);
-      out.push_back(kHex[c & 15]);
-    } else {
-      out.push_back(ch);
-    }
-  }
-  return out;
-}
-
 class VtkReader {
  public:
   VtkReader(const std::string& path, const std::string& data, Mesh* mesh)
@@ -104,6 +87,7 @@ class VtkReader {
       offsets.assign(1, 0);
       have_cells = have_types = true;
     }
+    std::vector<DataArray> field;
     std::string_view t;
     while (s_.try_token(&t)) {
       const std::size_t p = s_.pos() - t.size();
@@ -135,9 +119,8 @@ class VtkReader {
         const bool cell = t == "CELL_DATA";
         const std::int64_t n = s_.integer(0, kMaxInt32 - 1, "number of data items");
         read_attributes(n, cell ? &mesh_->cell_data : &mesh_->point_data);
-      } else if (t == "FIELD") {  // dataset-level field data: not mesh data, skipped
-        std::vector<DataArray> ignored;
-        read_field(-1, &ignored);
+      } else if (t == "FIELD") {  // dataset-level field data: physical names (vtk_common.h)
+        read_field(-1, &field);
       } else if (t == "METADATA") {
         skip_metadata();
       } else {
@@ -156,6 +139,7 @@ class VtkReader {
     std::string bad;
     if (!extract_tag_arrays(mesh_, &bad))
       s_.fail("tag array '" + bad + "' must hold one integer per cell");
+    names_from_field_data(field, mesh_);
   }
 
  private:
@@ -433,7 +417,6 @@ class VtkReader {
         s_.fail_at(p, "field array '" + printable(name) + "' has " + std::to_string(tuples) +
                           " tuples, expected " + std::to_string(n));
       add_array(name, static_cast<int>(comps), tuples, type, out);
-      if (n < 0) out->pop_back();
       skip_metadata_if_present();
     }
   }
@@ -494,136 +477,11 @@ class VtkReader {
   }
 };
 
-class VtkWriter {
- public:
-  VtkWriter(const Mesh& mesh, bool binary, std::string* out)
-      : mesh_(mesh), bin_(binary), out_(out) {}
-
-  void write() {
-    const int n = mesh_.num_vertices();
-    const int m = mesh_.num_cells();
-    out_->append("# vtk DataFile Version 3.0\ntmop mesh\n");
-    out_->append(bin_ ? "BINARY\n" : "ASCII\n");
-    out_->append("DATASET UNSTRUCTURED_GRID\nPOINTS ");
-    append_int(out_, n);
-    out_->append(" double\n");
-    for (int v = 0; v < n; ++v) {
-      for (int j = 0; j < 3; ++j) real(coord(mesh_, v, j), j == 2 ? '\n' : ' ');
-    }
-    end_binary();
-    std::int64_t size = 0;
-    for (int c = 0; c < m; ++c) size += 1 + mesh_.cell_size(c);
-    out_->append("CELLS ");
-    append_int(out_, m);
-    out_->push_back(' ');
-    append_int(out_, size);
-    out_->push_back('\n');
-    for (int c = 0; c < m; ++c) {
-      const CellType t = mesh_.cell_types[c];
-      const int nn = cell_num_nodes(t);
-      const int* p = gmsh_index_of_vtk_node(t);
-      integer(nn, ' ');
-      for (int i = 0; i < nn; ++i) integer(mesh_.cell(c)[p[i]], i + 1 == nn ? '\n' : ' ');
-    }
-    end_binary();
-    out_->append("CELL_TYPES ");
-    append_int(out_, m);
-    out_->push_back('\n');
-    for (int c = 0; c < m; ++c) integer(vtk_cell_type(mesh_.cell_types[c]), '\n');
-    end_binary();
-    out_->append("CELL_DATA ");
-    append_int(out_, m);
-    out_->push_back('\n');
-    write_int_array(kRegionArray, mesh_.cell_region);
-    write_int_array(kEntityArray, mesh_.cell_entity);
-    for (const DataArray& a : mesh_.cell_data)
-      if (!is_tag_array(a.name)) write_array(a, m);
-    if (!mesh_.point_data.empty()) {
-      out_->append("POINT_DATA ");
-      append_int(out_, n);
-      out_->push_back('\n');
-      for (const DataArray& a : mesh_.point_data) write_array(a, n);
-    }
-  }
-
- private:
-  void real(double v, char sep) {
-    if (bin_) {
-      append_binary<double>(out_, v, true);
-    } else {
-      append_double(out_, v);
-      out_->push_back(sep);
-    }
-  }
-  void integer(std::int64_t v, char sep) {
-    if (bin_) {
-      append_binary<std::int32_t>(out_, static_cast<std::int32_t>(v), true);
-    } else {
-      append_int(out_, v);
-      out_->push_back(sep);
-    }
-  }
-  void end_binary() {
-    if (bin_) out_->push_back('\n');
-  }
-
-  void write_int_array(const char* name, const std::vector<std::int32_t>& values) {
-    out_->append("SCALARS ");
-    out_->append(name);
-    out_->append(" int 1\nLOOKUP_TABLE default\n");
-    for (std::int32_t v : values) integer(v, '\n');
-    end_binary();
-  }
-
-  void write_array(const DataArray& a, int items) {
-    if (a.components < 1 || a.values.size() != static_cast<std::size_t>(items) * a.components)
-      throw Error("cannot write: data array '" + printable(a.name) + "' has " +
-                  std::to_string(a.values.size()) + " values for " + std::to_string(items) +
-                  " items");
-    const std::string name = encode_name(a.name);
-    if (a.components == 3) {
-      out_->append("VECTORS " + name + " double\n");
-    } else if (a.components <= 4) {
-      out_->append("SCALARS " + name + " double " + std::to_string(a.components) +
-                   "\nLOOKUP_TABLE default\n");
-    } else {
-      out_->append("FIELD FieldData 1\n" + name + " " + std::to_string(a.components) + " " +
-                   std::to_string(items) + " double\n");
-    }
-    for (std::size_t i = 0; i < a.values.size(); ++i)
-      real(a.values[i], (i + 1) % a.components == 0 ? '\n' : ' ');
-    end_binary();
-  }
-
-  const Mesh& mesh_;
-  bool bin_;
-  std::string* out_;
-};
-
 }  // namespace
 
 void read_vtk(const std::string& path, const std::string& data, Mesh* mesh) {
   mesh->space_dim = 3;
   VtkReader(path, data, mesh).read();
-}
-
-void check_vtk_writable(const Mesh& mesh) {
-  // "SCALARS  double 1" reads "double" as the name: an unnamed array has no legacy form.
-  for (const auto* arrays : {&mesh.point_data, &mesh.cell_data})
-    for (const DataArray& a : *arrays)
-      if (a.name.empty())
-        throw Error(std::string("cannot write an unnamed ") +
-                    (arrays == &mesh.point_data ? "point" : "cell") +
-                    "-data array to .vtk (legacy VTK arrays need a name; .vtu takes it)");
-}
-
-void write_vtk(const Mesh& mesh, const WriteOptions& options, std::string* out) {
-  check_vtk_writable(mesh);
-  for (int c = 0; c < mesh.num_cells(); ++c)
-    for (int k = 0; k < mesh.cell_size(c); ++k)
-      if (mesh.cell(c)[k] < 0 || mesh.cell(c)[k] >= mesh.num_vertices())
-        throw Error("cannot write: cell " + std::to_string(c) + " refers to a missing vertex");
-  VtkWriter(mesh, options.binary, out).write();
 }
 
 }  // namespace io

@@ -1,5 +1,6 @@
 #include "tmop/io/vtk_common.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -43,6 +44,28 @@ bool extract_tag_arrays(Mesh* mesh, std::string* bad_name) {
     return false;
   }
   return true;
+}
+
+std::vector<DataArray> field_data_of_names(const Mesh& mesh) {
+  std::vector<PhysicalName> names = mesh.physical_names;
+  std::stable_sort(names.begin(), names.end(), [](const PhysicalName& a, const PhysicalName& b) {
+    return a.dim != b.dim ? a.dim < b.dim : a.tag < b.tag;
+  });
+  std::vector<DataArray> out;
+  for (const PhysicalName& p : names)
+    out.push_back(DataArray{p.name, 1, {static_cast<double>(p.tag), static_cast<double>(p.dim)}});
+  return out;
+}
+
+void names_from_field_data(const std::vector<DataArray>& field, Mesh* mesh) {
+  for (const DataArray& a : field) {
+    if (a.values.size() != 2 || a.name.empty()) continue;
+    const double tag = a.values[0], dim = a.values[1];
+    if (tag != std::floor(tag) || std::fabs(tag) > std::numeric_limits<std::int32_t>::max() ||
+        !(dim == 0 || dim == 1 || dim == 2 || dim == 3))
+      continue;
+    mesh->set_physical_name(static_cast<int>(dim), static_cast<int>(tag), a.name);
+  }
 }
 
 }  // namespace io

@@ -4,8 +4,7 @@
 // header_type UInt32 or UInt64; compressor none or vtkZLibDataCompressor. Points, Cells
 // (connectivity / offsets / types), PointData and CellData arrays (any numeric type, stored as
 // double); tag arrays per vtk_common.h. Write: version 1.0, LittleEndian, UInt64 headers, ascii
-// or uncompressed base64 inline; points Float64, connectivity / offsets Int64, types UInt8, tags
-// Int32, fields Float64. Node order converted by node_order.h.
+// or uncompressed base64 inline (vtu_write.cc). Node order converted by node_order.h.
 //
 // Binary payloads are checked before use: the declared byte count must match the array size
 // implied by NumberOfPoints / NumberOfCells / components, and a compressed block may not claim
@@ -63,23 +62,6 @@ std::string unescape(std::string_view s) {
       }
     }
     if (!done) out.push_back('&');
-  }
-  return out;
-}
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out.push_back(c);
   }
   return out;
 }
@@ -243,6 +225,8 @@ class VtuReader {
     std::int64_t np = 0, nc = 0;
     std::vector<double> conn, offsets, types;
     bool have_conn = false, have_offsets = false, have_types = false;
+    bool in_field = false;
+    std::vector<DataArray> field;  // dataset-level FieldData: physical names (vtk_common.h)
     while (next_tag(&t)) {
       if (have_appended_ && t.start >= appended_start_) break;
       if (t.name == "Piece" && !t.closing) {
@@ -263,6 +247,16 @@ class VtuReader {
                     : t.name == "Cells"     ? kCells
                     : t.name == "PointData" ? kPointData
                                             : kCellData;
+        }
+      } else if (t.name == "FieldData") {
+        in_field = !t.closing && !t.empty;
+      } else if (t.name == "DataArray" && !t.closing && in_field) {
+        const std::string* type = t.attr("type");
+        if (!type || scalar_size(*type) == 0 || type->find("Float") == 0) {
+          skip_array(t);  // string arrays and the like: not names
+        } else {
+          Array a = read_array(t, -1, /*finite=*/false);
+          field.push_back(DataArray{a.name, a.components, std::move(a.values)});
         }
       } else if (t.name == "DataArray" && !t.closing) {
         const std::string* name = t.attr("Name");
@@ -311,6 +305,7 @@ class VtuReader {
     std::string bad;
     if (!extract_tag_arrays(mesh_, &bad))
       s_.fail("tag array '" + bad + "' must hold one integer per cell");
+    names_from_field_data(field, mesh_);
   }
 
   void skip_array(const Tag& t) {
@@ -543,101 +538,11 @@ class VtuReader {
   std::size_t types_pos_ = 0;
 };
 
-class VtuWriter {
- public:
-  VtuWriter(const Mesh& mesh, bool binary, std::string* out)
-      : mesh_(mesh), bin_(binary), out_(out) {}
-
-  void write() {
-    const int n = mesh_.num_vertices(), m = mesh_.num_cells();
-    out_->append(
-        "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
-        "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece "
-        "NumberOfPoints=\"");
-    append_int(out_, n);
-    out_->append("\" NumberOfCells=\"");
-    append_int(out_, m);
-    out_->append("\">\n<Points>\n");
-    std::vector<double> xyz(static_cast<std::size_t>(n) * 3);
-    for (int v = 0; v < n; ++v)
-      for (int j = 0; j < 3; ++j) xyz[3 * static_cast<std::size_t>(v) + j] = coord(mesh_, v, j);
-    array("Float64", "", 3, xyz);
-    out_->append("</Points>\n<Cells>\n");
-    std::vector<std::int64_t> conn, offsets;
-    std::vector<std::uint8_t> types;
-    conn.reserve(mesh_.cell_nodes.size());
-    for (int c = 0; c < m; ++c) {
-      const CellType t = mesh_.cell_types[c];
-      const int* p = gmsh_index_of_vtk_node(t);
-      for (int i = 0; i < cell_num_nodes(t); ++i) conn.push_back(mesh_.cell(c)[p[i]]);
-      offsets.push_back(static_cast<std::int64_t>(conn.size()));
-      types.push_back(static_cast<std::uint8_t>(vtk_cell_type(t)));
-    }
-    array("Int64", "connectivity", 1, conn);
-    array("Int64", "offsets", 1, offsets);
-    array("UInt8", "types", 1, types);
-    out_->append("</Cells>\n<CellData>\n");
-    array("Int32", kRegionArray, 1, mesh_.cell_region);
-    array("Int32", kEntityArray, 1, mesh_.cell_entity);
-    for (const DataArray& a : mesh_.cell_data)
-      if (!is_tag_array(a.name)) data_array(a, m);
-    out_->append("</CellData>\n<PointData>\n");
-    for (const DataArray& a : mesh_.point_data) data_array(a, n);
-    out_->append("</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-  }
-
- private:
-  void data_array(const DataArray& a, int items) {
-    if (a.components < 1 || a.values.size() != static_cast<std::size_t>(items) * a.components)
-      throw Error("cannot write: data array '" + printable(a.name) + "' has " +
-                  std::to_string(a.values.size()) + " values for " + std::to_string(items) +
-                  " items");
-    array("Float64", a.name, a.components, a.values);
-  }
-
-  template <typename T>
-  void array(const char* type, const std::string& name, int comps, const std::vector<T>& v) {
-    out_->append("<DataArray type=\"");
-    out_->append(type);
-    if (!name.empty()) out_->append("\" Name=\"" + escape(name));
-    out_->append("\" NumberOfComponents=\"" + std::to_string(comps) + "\" format=\"");
-    out_->append(bin_ ? "binary\">\n" : "ascii\">\n");
-    if (bin_) {
-      std::string raw;
-      append_binary<std::uint64_t>(&raw, v.size() * sizeof(T));
-      raw.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
-      base64_encode(reinterpret_cast<const unsigned char*>(raw.data()), raw.size(), out_);
-      out_->push_back('\n');
-    } else {
-      for (std::size_t i = 0; i < v.size(); ++i) {
-        if constexpr (std::is_floating_point_v<T>)
-          append_double(out_, v[i]);
-        else
-          append_int(out_, static_cast<std::int64_t>(v[i]));
-        out_->push_back((i + 1) % comps == 0 ? '\n' : ' ');
-      }
-    }
-    out_->append("</DataArray>\n");
-  }
-
-  const Mesh& mesh_;
-  bool bin_;
-  std::string* out_;
-};
-
 }  // namespace
 
 void read_vtu(const std::string& path, const std::string& data, Mesh* mesh) {
   mesh->space_dim = 3;
   VtuReader(path, data, mesh).read();
-}
-
-void write_vtu(const Mesh& mesh, const WriteOptions& options, std::string* out) {
-  for (int c = 0; c < mesh.num_cells(); ++c)
-    for (int k = 0; k < mesh.cell_size(c); ++k)
-      if (mesh.cell(c)[k] < 0 || mesh.cell(c)[k] >= mesh.num_vertices())
-        throw Error("cannot write: cell " + std::to_string(c) + " refers to a missing vertex");
-  VtuWriter(mesh, options.binary, out).write();
 }
 
 }  // namespace io

@@ -41,6 +41,21 @@ std::vector<int> Mesh::count_by_type() const {
   return count;
 }
 
+const std::string* Mesh::physical_name(int dim, int tag) const {
+  for (const PhysicalName& p : physical_names)
+    if (p.dim == dim && p.tag == tag) return &p.name;
+  return nullptr;
+}
+
+void Mesh::set_physical_name(int dim, int tag, const std::string& name) {
+  for (PhysicalName& p : physical_names)
+    if (p.dim == dim && p.tag == tag) {
+      p.name = name;
+      return;
+    }
+  physical_names.push_back({dim, tag, name});
+}
+
 void Mesh::clear() { *this = Mesh(); }
 
 void Mesh::remove_lower_dimensional_cells() {
@@ -50,6 +65,8 @@ void Mesh::remove_lower_dimensional_cells() {
   out.plane_z = plane_z;
   out.coords = std::move(coords);
   out.point_data = std::move(point_data);
+  out.physical_names = std::move(physical_names);
+  out.periodic = std::move(periodic);
   std::vector<bool> keep(num_cells());
   for (int c = 0; c < num_cells(); ++c) {
     keep[c] = cell_dim(cell_types[c]) == d;
@@ -64,6 +81,14 @@ void Mesh::remove_lower_dimensional_cells() {
     out.cell_data.push_back(std::move(b));
   }
   *this = std::move(out);
+}
+
+void mark_periodic_vertices(const Mesh& mesh, std::vector<char>* flags) {
+  const std::int32_t n = static_cast<std::int32_t>(flags->size());
+  for (const PeriodicLink& link : mesh.periodic)
+    for (const auto& pair : link.nodes)
+      for (const std::int32_t v : {pair.first, pair.second})
+        if (v >= 0 && v < n) (*flags)[v] = 1;
 }
 
 }  // namespace tmop

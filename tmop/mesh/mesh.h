@@ -13,11 +13,17 @@
 //   "gmsh:physical"); cell_entity the elementary / geometric entity tag. 0 means none.
 // - point_data / cell_data are optional named fields written by the formats that can carry them
 //   (.vtu, .vtk); quality tools put per-cell measures there.
+// - physical_names names physical tags per dimension (Gmsh $PhysicalNames: (1, 3) "inlet"); a
+//   cell's name is the one of (cell_dim(type), cell_region). Formats with names of their own map
+//   them (docs/formats.md: Exodus block names, CGNS families, SU2 markers, VTK field data).
+// - periodic holds Gmsh's periodic links ($Periodic): pairs of vertices that are images of each
+//   other. The optimizer keeps every such vertex fixed, so periodicity cannot break.
 #ifndef TMOP_MESH_MESH_H_
 #define TMOP_MESH_MESH_H_
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tmop/element/cell_type.h"
@@ -28,6 +34,21 @@ struct DataArray {
   std::string name;
   int components = 1;
   std::vector<double> values;  // num_items * components
+};
+
+struct PhysicalName {
+  int dim = 0;  // 0..3: the dimension of the cells the tag is on
+  int tag = 0;  // the cell_region value
+  std::string name;
+};
+
+// One $Periodic link: the vertices of entity (dim, tag) are images of those of (dim, master_tag).
+struct PeriodicLink {
+  int dim = 0;
+  int tag = 0;
+  int master_tag = 0;
+  std::vector<double> affine;  // 16 values (row-major 4x4 transform, master -> slave) or empty
+  std::vector<std::pair<std::int32_t, std::int32_t>> nodes;  // (vertex, master vertex), 0-based
 };
 
 class Mesh {
@@ -47,6 +68,14 @@ class Mesh {
 
   std::vector<DataArray> point_data;
   std::vector<DataArray> cell_data;
+
+  std::vector<PhysicalName> physical_names;  // at most one per (dim, tag)
+  std::vector<PeriodicLink> periodic;
+
+  // The name of physical tag `tag` in dimension `dim`; nullptr when it has none.
+  const std::string* physical_name(int dim, int tag) const;
+  // Sets (or replaces) the name of (dim, tag).
+  void set_physical_name(int dim, int tag, const std::string& name);
 
   int num_vertices() const { return static_cast<int>(coords.size() / space_dim); }
   int num_cells() const { return static_cast<int>(cell_types.size()); }
@@ -79,6 +108,10 @@ class Mesh {
   // Removes every cell whose dimension is below dim() (boundary tags); keeps the vertices.
   void remove_lower_dimensional_cells();
 };
+
+// Sets flags[v] = 1 for both vertices of every periodic pair of mesh.periodic (flags has one
+// entry per vertex; out-of-range pairs are ignored). The optimizer's fixed-vertex rule.
+void mark_periodic_vertices(const Mesh& mesh, std::vector<char>* flags);
 
 }  // namespace tmop
 

@@ -80,6 +80,9 @@ Status stage_fixed_vertices(const Mesh& mesh, const StageSpec& spec, std::vector
   if (fixed.empty()) fixed = boundary_vertex_mask(mesh);
   if (static_cast<int>(fixed.size()) != mesh.num_vertices())
     return Status::Failure("fixed-vertex flags: one per vertex expected");
+  // Periodic vertices (Mesh::periodic) stay where they are: moving one side of a link without
+  // its image would break the periodicity the file declares.
+  mark_periodic_vertices(mesh, &fixed);
   return Status::Ok();
 }
 

@@ -95,6 +95,7 @@ Status laplace(Mesh* mesh, const LaplaceOptions& options, RecipeResult* result) 
   if (fixed.empty()) fixed = boundary_vertex_mask(*mesh);
   if (static_cast<int>(fixed.size()) != mesh->num_vertices())
     return Status::Failure("laplace: fixed-vertex flags: one per vertex expected");
+  mark_periodic_vertices(*mesh, &fixed);  // as every stage does (optimize/stage_spec.cc)
   if (options.max_sweeps < 0 || !(options.tolerance >= 0))
     return Status::Failure("laplace: max_sweeps and tolerance must be >= 0");
   result->before = measure_mesh(*mesh, options.rule);
