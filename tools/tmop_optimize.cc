@@ -7,8 +7,12 @@
 //                  --target_shape=ideal|initial --target_skew=SRC --target_aspect=SRC]
 //                 [--solver=lm|dogleg] [--linear_solver=auto|cholesky|cgnr]
 //                 [--max_iterations=N] [--threads=N] [--report=FILE.json] [--verbose]
-//                 [--orientation=auto|gmsh|opposite]
+//                 [--orientation=auto|gmsh|opposite] [--fixed_nodes=FILE|field:NAME]
+//                 [--from_report=FILE.json]
 //
+// A thin layer over the recipe registry (tmop/recipes/recipe.h: run_recipe): flags become
+// RecipeOptions, the files are read and checked, the result is checked against the guarantees,
+// written and reported (tools/optimize/run_report.h). A cancelled run ends as SIGINT does.
 // Exit status: 0 success; 1 the optimization could not reach its goal; 2 bad input or usage.
 // Errors are one line on stderr. OUT is written atomically and only on success; IN is never
 // opened for writing.

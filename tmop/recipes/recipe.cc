@@ -24,23 +24,15 @@ using O = RecipeOption;
   O::kSolverMethod, O::kMaxIterations, O::kMaxSeconds, O::kFunctionTolerance, O::kThreads
 
 const std::vector<RecipeInfo>& table() {
+  // auto, shape, surface and high_order: the shape recipe's options (after untangling).
+  const std::vector<RecipeOption> shape_family = {
+      O::kMetric, O::kTarget,   O::kReference, O::kPower,     O::kSampleRule,
+      O::kSlide,  O::kGeometry, O::kFixed,     O::kGuarantee, TMOP_SOLVER_OPTIONS};
   static const std::vector<RecipeInfo> t = {
-      {"auto",
-       "untangle if anything is inverted, then improve shape",
-       {O::kMetric, O::kTarget, O::kReference, O::kPower, O::kSampleRule, O::kSlide, O::kGeometry,
-        O::kFixed, O::kGuarantee, TMOP_SOLVER_OPTIONS},
-       false,
-       false,
-       true,
-       true},
-      {"shape",
-       "shape improvement with a barrier metric (the input must be valid)",
-       {O::kMetric, O::kTarget, O::kReference, O::kPower, O::kSampleRule, O::kSlide, O::kGeometry,
-        O::kFixed, O::kGuarantee, TMOP_SOLVER_OPTIONS},
-       false,
-       true,
-       true,
-       true},
+      {"auto", "untangle if anything is inverted, then improve shape", shape_family, false, false,
+       true, true},
+      {"shape", "shape improvement with a barrier metric (the input must be valid)", shape_family,
+       false, true, true, true},
       {"untangle",
        "untangle only",
        {O::kReference, O::kSampleRule, O::kSlide, O::kGeometry, O::kFixed, O::kGuarantee,
@@ -49,14 +41,8 @@ const std::vector<RecipeInfo>& table() {
        false,
        true,
        true},
-      {"surface",
-       "shape improvement of a surface mesh on its geometry",
-       {O::kMetric, O::kTarget, O::kReference, O::kPower, O::kSampleRule, O::kSlide, O::kGeometry,
-        O::kFixed, O::kGuarantee, TMOP_SOLVER_OPTIONS},
-       true,
-       false,
-       true,
-       true},
+      {"surface", "shape improvement of a surface mesh on its geometry", shape_family, true, false,
+       true, true},
       {"equal_edge",
        "equal edge lengths keeping shapes",
        {O::kMetric, O::kSampleRule, O::kSlide, O::kGeometry, O::kFixed, O::kGuarantee,
@@ -95,14 +81,8 @@ const std::vector<RecipeInfo>& table() {
        false,
        true,
        false},
-      {"high_order",
-       "quadratic meshes: untangle + shape + Bernstein certificate (as auto)",
-       {O::kMetric, O::kTarget, O::kReference, O::kPower, O::kSampleRule, O::kSlide, O::kGeometry,
-        O::kFixed, O::kGuarantee, TMOP_SOLVER_OPTIONS},
-       false,
-       false,
-       true,
-       true},
+      {"high_order", "quadratic meshes: untangle + shape + Bernstein certificate (as auto)",
+       shape_family, false, false, true, true},
   };
   return t;
 }
