@@ -103,7 +103,8 @@ struct RecipeOptions {
   // callback, which sees every stage of the recipe and may cancel (solver_options.h).
   SolverOptions solver;
   // Raised by another thread: the run stops at the next iteration, as a cancelling callback
-  // does. Not owned; may be null.
+  // does. Not owned; may be null. Like a progress callback it makes every iteration measure the
+  // mesh (objective, worst quality, inverted count: a pass over the mesh per iteration).
   const std::atomic<bool>* cancel = nullptr;
 
   // Recipe-specific (refused by the others when set):
