@@ -21,6 +21,7 @@
 #include "tmop/recipes/laplace.h"
 #include "tmop/recipes/preserve.h"
 #include "tmop/recipes/quadratic_shape.h"
+#include "tmop/recipes/recipe.h"
 #include "tmop/recipes/recipe_geometry.h"
 #include "tmop/recipes/recipe_result.h"
 #include "tmop/recipes/size_adapt.h"

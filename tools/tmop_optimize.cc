@@ -7,8 +7,12 @@
 //                  --target_shape=ideal|initial --target_skew=SRC --target_aspect=SRC]
 //                 [--solver=lm|dogleg] [--linear_solver=auto|cholesky|cgnr]
 //                 [--max_iterations=N] [--threads=N] [--report=FILE.json] [--verbose]
-//                 [--orientation=auto|gmsh|opposite]
+//                 [--orientation=auto|gmsh|opposite] [--fixed_nodes=FILE|field:NAME]
+//                 [--from_report=FILE.json]
 //
+// A thin layer over the recipe registry (tmop/recipes/recipe.h: run_recipe): flags become
+// RecipeOptions, the files are read and checked, the result is checked against the guarantees,
+// written and reported (tools/optimize/run_report.h). A cancelled run ends as SIGINT does.
 // Exit status: 0 success; 1 the optimization could not reach its goal; 2 bad input or usage.
 // Errors are one line on stderr. OUT is written atomically and only on success; IN is never
 // opened for writing.
@@ -19,44 +23,46 @@
 #include <glog/logging.h>
 #include <sys/stat.h>
 
-#include <algorithm>
-#include <chrono>
+#include <csignal>
 #include <cstdio>
-#include <fstream>
 #include <string>
 
 #include "tmop/io/atomic_file.h"
 #include "tmop/io/mesh_io.h"
+#include "tmop/io/node_list.h"
 #include "tmop/mesh/orientation.h"
 #include "tmop/mesh/validate.h"
 #include "tmop/metric/metric.h"
 #include "tmop/quality/guarantees.h"
 #include "tmop/quality/quality_fields.h"
-#include "tmop/quality/quality_json.h"
 #include "tmop/quality/quality_report.h"
-#include "tmop/recipes/equal_edge.h"
-#include "tmop/recipes/improve_shape.h"
-#include "tmop/recipes/laplace.h"
-#include "tmop/recipes/preserve.h"
-#include "tmop/recipes/size_adapt.h"
-#include "tmop/recipes/sliver.h"
-#include "tmop/recipes/untangle.h"
+#include "tmop/recipes/recipe.h"
+#include "tmop/recipes/recipe_geometry.h"
+#include "tmop/target/composed_target.h"
 #include "tmop/target/target.h"
+#include "tools/optimize/run_report.h"
 #include "tools/parse_flags.h"
 #include "tools/print_error.h"
 
 DEFINE_string(input, "",
               "Input mesh (.msh .vtk .vtu .mesh .ugrid .exo .e .cgns .obj .off .ply .stl).");
 DEFINE_string(output, "", "Output mesh; format by extension. Written only on success.");
-DEFINE_string(recipe, "auto",
-              "auto: untangle if anything is inverted, then improve shape; "
-              "shape: shape improvement with a barrier metric (the input must be valid); "
-              "untangle: untangle only; surface: shape improvement of a surface mesh on its "
-              "geometry (--geometry); equal_edge: equal edge lengths keeping shapes; "
-              "size_adapt: shapes with the local (or --size_field) size; preserve: follow a "
-              "moved boundary (--moved); laplace: smart Laplacian baseline; sliver: remove "
-              "slivers, keep the boundary layer (slides by default); high_order: quadratic "
-              "meshes, untangle + shape + Bernstein certificate (the same as auto).");
+// --help lists the recipes of the registry (tmop/recipes/recipe.h) with their summaries.
+static const std::string recipe_help = [] {
+  std::string h;
+  for (const tmop::RecipeInfo& r : tmop::recipes())
+    h += std::string(h.empty() ? "" : "; ") + r.name + ": " + r.summary;
+  return h + " (an option a recipe does not use is refused)";
+}();
+DEFINE_string(recipe, "auto", recipe_help.c_str());
+DEFINE_string(fixed_nodes, "",
+              "Nodes held fixed (bit for bit) in addition to the --boundary mode's: a text file "
+              "of 0-based node indices separated by whitespace or newlines, # comments; or "
+              "field:NAME, a point-data array of the input (nonzero = fixed). Recipe preserve: "
+              "they take their --moved positions.");
+DEFINE_string(from_report, "",
+              "Rerun with the flags recorded in this --report file (flags given on the command "
+              "line override; --output and --report are never taken from it).");
 DEFINE_bool(write_on_failure, false,
             "When the recipe fails (e.g. cannot untangle or certify), still write --output: the "
             "result if it has fewer inverted cells than the input, else the input; exit 1.");
@@ -159,10 +165,12 @@ DEFINE_string(guarantee, "all",
 
 namespace {
 
+using namespace tmop;
+
 int fail(int code, const std::string& message) {
-  tmop_tools::print_error(
-      "tmop_optimize", message,
-      {FLAGS_input, FLAGS_output, FLAGS_reference, FLAGS_moved, FLAGS_report, FLAGS_geometry});
+  tmop_tools::print_error("tmop_optimize", message,
+                          {FLAGS_input, FLAGS_output, FLAGS_reference, FLAGS_moved, FLAGS_report,
+                           FLAGS_geometry, FLAGS_fixed_nodes, FLAGS_from_report});
   return code;
 }
 
@@ -174,18 +182,16 @@ bool same_file(const std::string& a, const std::string& b) {
 }
 
 // The mesh in hand is in tmop's convention (--orientation decided): measure it as it is.
-tmop::QualityOptions as_decided() {
-  tmop::QualityOptions o;
+QualityOptions as_decided() {
+  QualityOptions o;
   o.detect_convention = false;
   return o;
 }
 
 // One line of the quality report (tmop_quality gives the whole report); returns the report.
 // keep_per_cell: keep the per-cell arrays (to refresh the mesh's quality fields with them).
-
-tmop::QualityReport print_quality(const char* label, const tmop::Mesh& mesh,
-                                  bool keep_per_cell = false) {
-  tmop::QualityReport q = tmop::compute_quality(mesh, as_decided());
+QualityReport print_quality(const char* label, const Mesh& mesh, bool keep_per_cell = false) {
+  QualityReport q = compute_quality(mesh, as_decided());
   std::printf("%-7s %lld elements, %lld inverted", label, static_cast<long long>(q.num_elements),
               static_cast<long long>(q.inverted_cells));
   if (q.mean_ratio.count > 0)
@@ -204,63 +210,15 @@ tmop::QualityReport print_quality(const char* label, const tmop::Mesh& mesh,
   return q;
 }
 
-// The run report: the recipe's record plus tmop_quality's report of the input and the result
-// (the same keys as tmop_quality --json and tmop_compare --json, docs/quality.md).
-// written: whether --output was written (null otherwise); status: "ok" or the recipe's failure;
-// after: the result as written (or, when nothing was written, as the recipe left it).
-std::string run_report(const tmop::RecipeResult& result, const tmop::QualityReport& before,
-                       const tmop::QualityReport& after, bool written, const std::string& status) {
-  auto indent = [](std::string text) {
-    while (!text.empty() && text.back() == '\n') text.pop_back();
-    std::string out;
-    for (char c : text) out += c == '\n' ? std::string("\n  ") : std::string(1, c);
-    return out;
-  };
-  return "{\n  \"input\": " + tmop::json_string(FLAGS_input) +
-         ",\n  \"output\": " + (written ? tmop::json_string(FLAGS_output) : "null") +
-         ",\n  \"status\": " + tmop::json_string(status) +
-         ",\n  \"run\": " + tmop::recipe_json(result) +
-         ",\n  \"quality_before\": " + indent(tmop::quality_json(before)) +
-         ",\n  \"quality_after\": " + indent(tmop::quality_json(after)) + "\n}";
-}
-
-}  // namespace
-
-int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "improve a mesh by node movement\n"
-      "  tmop_optimize --input=IN --output=OUT [--recipe=auto|shape|untangle|surface|sliver|"
-      "equal_edge|size_adapt|preserve|laplace|high_order] [flags]");
-#ifdef __GLIBC__
-  // A fixed mmap threshold: glibc's adaptive one rises to the size of freed buffers (reading,
-  // the quality report), after which multi-MB vectors land in the heap and leave it fragmented;
-  // 1M tets: peak 1,029 -> 988 MB, the same time (docs/benchmarks.md).
-  mallopt(M_MMAP_THRESHOLD, 4 << 20);
-#endif
-  tmop_tools::parse_flags(&argc, &argv);
-  // Ctrl-C or a SIGTERM mid-run: temporary files removed, one line on stderr, exit 130.
-  tmop::remove_temporaries_on_signal("tmop_optimize");
-  // Ceres reports through glog; the tool reports itself (one line on failure).
-  FLAGS_minloglevel = FLAGS_verbose ? 1 : 3;
-  google::InitGoogleLogging(argv[0]);
-  using namespace tmop;
-
-  if (FLAGS_list_metrics) {
-    for (int d = 2; d <= 3; ++d) {
-      std::printf("%dD:", d);
-      for (const std::string& n : metric_names(d)) std::printf(" %s", n.c_str());
-      std::printf("\n");
-    }
-    std::printf("weighted combinations of two: W1*NAME1+W2*NAME2 (weights >= 0, default 1)\n");
-    return 0;
-  }
+// Usage errors of the flags alone, said before any file is read: 0, or the exit code.
+int check_flags(int argc, char** argv) {
   if (argc > 1)
     return fail(2, std::string("unexpected argument '") + argv[1] +
                        "' (every option is a --flag=value; see --help)");
   if (FLAGS_input.empty() || FLAGS_output.empty())
     return fail(2, "--input and --output are required (see --help)");
   // Inputs are never modified: an output or report that is one of them is refused.
-  for (const std::string* in : {&FLAGS_input, &FLAGS_reference, &FLAGS_moved})
+  for (const std::string* in : {&FLAGS_input, &FLAGS_reference, &FLAGS_moved, &FLAGS_fixed_nodes})
     for (const std::string* out : {&FLAGS_output, &FLAGS_report})
       if (same_file(*in, *out))
         return fail(2, *out + ": is the input " + *in +
@@ -269,12 +227,8 @@ int main(int argc, char** argv) {
     const Status place = check_output_path(FLAGS_report);
     if (!place.ok()) return fail(2, place.message());
   }
-  const std::string recipes[] = {"auto",       "shape",    "untangle", "surface", "equal_edge",
-                                 "size_adapt", "preserve", "laplace",  "sliver",  "high_order"};
-  if (std::find(std::begin(recipes), std::end(recipes), FLAGS_recipe) == std::end(recipes))
-    return fail(2, "unknown --recipe '" + FLAGS_recipe +
-                       "' (known: auto, shape, untangle, surface, equal_edge, size_adapt, "
-                       "preserve, laplace, sliver, high_order)");
+  if (!find_recipe(FLAGS_recipe))
+    return fail(2, "unknown --recipe '" + FLAGS_recipe + "' (known: " + recipe_names() + ")");
   if (FLAGS_max_iterations < 0) return fail(2, "--max_iterations must be >= 0");
   if (!(FLAGS_max_seconds > 0)) return fail(2, "--max_seconds must be > 0");
   if (!(FLAGS_function_tolerance >= 0)) return fail(2, "--function_tolerance must be >= 0");
@@ -285,7 +239,8 @@ int main(int argc, char** argv) {
   if (!(FLAGS_power >= 1 || FLAGS_power == 0)) return fail(2, "--power must be >= 1 (or 0)");
   if (!(FLAGS_feature_angle > 0 && FLAGS_feature_angle < 180))
     return fail(2, "--feature_angle must be in (0, 180) degrees");
-  if (FLAGS_guarantee != "all" && FLAGS_guarantee != "worst" && FLAGS_guarantee != "off")
+  GuaranteeMode g;
+  if (!guarantee_mode_from_name(FLAGS_guarantee, &g))
     return fail(2, "--guarantee must be all, worst or off, not '" + FLAGS_guarantee + "'");
   if (FLAGS_orientation != "auto" && FLAGS_orientation != "gmsh" && FLAGS_orientation != "opposite")
     return fail(2, "--orientation must be auto, gmsh or opposite, not '" + FLAGS_orientation + "'");
@@ -293,139 +248,165 @@ int main(int argc, char** argv) {
     return fail(2, "--msh_version must be 2.2 or 4.1, not '" + FLAGS_msh_version + "'");
   if (FLAGS_boundary != "fixed" && FLAGS_boundary != "slide")
     return fail(2, "--boundary must be fixed or slide, not '" + FLAGS_boundary + "'");
-  // Recipes surface and sliver slide by default (their definitions); the others keep the
-  // boundary fixed unless told.
-  const bool boundary_given = !gflags::GetCommandLineFlagInfoOrDie("boundary").is_default;
-  const bool slide = FLAGS_boundary == "slide" || FLAGS_recipe == "surface" ||
-                     (FLAGS_recipe == "sliver" && !boundary_given);
   if (FLAGS_recipe == "preserve" && FLAGS_moved.empty())
     return fail(2, "--recipe=preserve needs --moved=FILE (the mesh with its boundary moved)");
+  return 0;
+}
 
-  ShapeOptions opt;
-  opt.metric = FLAGS_metric;
-  if (FLAGS_power > 0) opt.power = FLAGS_power;
-  if (!sample_rule_from_name(FLAGS_sample_points, &opt.rule))
-    return fail(2, "unknown --sample_points '" + FLAGS_sample_points + "'");
-  const bool composed = FLAGS_target == "composed";
-  std::string target = FLAGS_reference.empty() || composed ? FLAGS_target : "reference";
-  if (!target_type_from_name(target, &opt.target.type))
+// The targets of --target, --reference, --size_field and the composed factors: 0 or the exit
+// code.
+int target_from_flags(TargetSpec* t, bool* composed) {
+  *composed = FLAGS_target == "composed";
+  const std::string target = FLAGS_reference.empty() || *composed ? FLAGS_target : "reference";
+  if (!target_type_from_name(target, &t->type))
     return fail(2, "unknown --target '" + target +
                        "' (known: ideal_unit, equal_size, local_size, size_field, reference, "
                        "lambda_identity, composed)");
-  opt.target.size_field = FLAGS_size_field;
+  if (target == "size_field") t->size_field = FLAGS_size_field;
   if (target == "reference" && FLAGS_reference.empty())
     return fail(2,
                 "--target=reference needs --reference=FILE (the mesh whose Jacobians are the "
                 "targets)");
   if (target == "size_field" && FLAGS_size_field.empty())
     return fail(2, "--target=size_field needs --size_field=NAME (a point-data array of the input)");
-  {
-    const char* factor_flags[] = {"target_size", "target_orientation", "target_shape",
-                                  "target_skew", "target_aspect"};
-    for (const char* f : factor_flags)
-      if (!composed && !gflags::GetCommandLineFlagInfoOrDie(f).is_default)
-        return fail(2, std::string("--") + f + " needs --target=composed");
-    if (FLAGS_target_shape != "ideal" && FLAGS_target_shape != "initial")
-      return fail(2, "--target_shape must be ideal or initial, not '" + FLAGS_target_shape +
-                         "' (--target_skew and --target_aspect take the other sources)");
-    ComposedTarget& c = opt.target.composed;
-    const struct {
-      FactorKind kind;
-      const char* flag;
-      const std::string& text;
-      TargetFactor* factor;
-    } factors[] = {
-        {FactorKind::kSize, "target_size", FLAGS_target_size, &c.size},
-        {FactorKind::kOrientation, "target_orientation", FLAGS_target_orientation, &c.orientation},
-        {FactorKind::kSkew, "target_skew",
-         FLAGS_target_skew.empty() ? FLAGS_target_shape : FLAGS_target_skew, &c.skew},
-        {FactorKind::kAspect, "target_aspect",
-         FLAGS_target_aspect.empty() ? FLAGS_target_shape : FLAGS_target_aspect, &c.aspect},
-    };
-    for (const auto& f : factors) {
-      const Status ps = parse_target_factor(f.kind, f.text, f.factor);
-      if (!ps.ok()) return fail(2, std::string("--") + f.flag + ": " + ps.message());
-    }
+  const char* factor_flags[] = {"target_size", "target_orientation", "target_shape", "target_skew",
+                                "target_aspect"};
+  for (const char* f : factor_flags)
+    if (!*composed && !gflags::GetCommandLineFlagInfoOrDie(f).is_default)
+      return fail(2, std::string("--") + f + " needs --target=composed");
+  if (FLAGS_target_shape != "ideal" && FLAGS_target_shape != "initial")
+    return fail(2, "--target_shape must be ideal or initial, not '" + FLAGS_target_shape +
+                       "' (--target_skew and --target_aspect take the other sources)");
+  ComposedTarget& c = t->composed;
+  const struct {
+    FactorKind kind;
+    const char* flag;
+    const std::string& text;
+    TargetFactor* factor;
+  } factors[] = {
+      {FactorKind::kSize, "target_size", FLAGS_target_size, &c.size},
+      {FactorKind::kOrientation, "target_orientation", FLAGS_target_orientation, &c.orientation},
+      {FactorKind::kSkew, "target_skew",
+       FLAGS_target_skew.empty() ? FLAGS_target_shape : FLAGS_target_skew, &c.skew},
+      {FactorKind::kAspect, "target_aspect",
+       FLAGS_target_aspect.empty() ? FLAGS_target_shape : FLAGS_target_aspect, &c.aspect},
+  };
+  for (const auto& f : factors) {
+    const Status ps = parse_target_factor(f.kind, f.text, f.factor);
+    if (!ps.ok()) return fail(2, std::string("--") + f.flag + ": " + ps.message());
   }
-  if (!solver_method_from_name(FLAGS_solver, &opt.solver.method))
+  return 0;
+}
+
+// The registry's options from the flags (all but the files: fixed nodes, reference, moved).
+int options_from_flags(RecipeOptions* o, bool* composed) {
+  if (const int rc = target_from_flags(&o->target, composed)) return rc;
+  o->metric = FLAGS_metric;
+  o->power = FLAGS_power;
+  if (!sample_rule_from_name(FLAGS_sample_points, &o->rule))
+    return fail(2, "unknown --sample_points '" + FLAGS_sample_points + "'");
+  // Recipes surface and sliver slide by default (their definitions); the others keep the
+  // boundary fixed unless told.
+  const bool given = !gflags::GetCommandLineFlagInfoOrDie("boundary").is_default;
+  o->boundary = FLAGS_boundary == "slide" ? BoundaryMode::kSlide
+                : given                   ? BoundaryMode::kFixed
+                                          : BoundaryMode::kDefault;
+  o->geometry.geometry = FLAGS_geometry;
+  o->geometry.feature_angle_deg = FLAGS_feature_angle;
+  guarantee_mode_from_name(FLAGS_guarantee, &o->guarantee);
+  SolverOptions& s = o->solver;
+  if (!solver_method_from_name(FLAGS_solver, &s.method))
     return fail(2, "unknown --solver '" + FLAGS_solver + "' (lm, dogleg)");
-  if (!linear_solver_from_name(FLAGS_linear_solver, &opt.solver.linear_solver))
+  if (!linear_solver_from_name(FLAGS_linear_solver, &s.linear_solver))
     return fail(2, "unknown --linear_solver '" + FLAGS_linear_solver + "'");
-  if (opt.solver.method == SolverOptions::Method::kDogleg &&
-      opt.solver.linear_solver == SolverOptions::LinearSolver::kCgnr)
+  if (s.method == SolverOptions::Method::kDogleg &&
+      s.linear_solver == SolverOptions::LinearSolver::kCgnr)
     return fail(2,
                 "--solver=dogleg needs sparse Cholesky (Ceres's dogleg cannot use CGNR): use "
                 "--linear_solver=auto or cholesky, or --solver=lm");
-  opt.solver.max_iterations = FLAGS_max_iterations;
-  opt.solver.max_seconds = FLAGS_max_seconds;
-  opt.solver.function_tolerance = FLAGS_function_tolerance;
-  opt.solver.threads = FLAGS_threads;
-  if (FLAGS_part_size >= 0) opt.solver.part_size = FLAGS_part_size;
-  opt.solver.max_sweeps = FLAGS_part_sweeps;
-  opt.solver.verbose = FLAGS_verbose;
-  opt.slide = slide;
-  opt.boundary.geometry = FLAGS_geometry;
-  opt.boundary.feature_angle_deg = FLAGS_feature_angle;
-  // The guarantees each recipe keeps (its guard) and the tool checks on its result.
-  const bool trades_shape =
-      FLAGS_recipe == "size_adapt" || FLAGS_recipe == "preserve" || FLAGS_recipe == "laplace";
-  const bool keeps_means = FLAGS_guarantee == "all" && FLAGS_recipe != "sliver" &&
-                           FLAGS_recipe != "equal_edge" && !trades_shape;
-  const bool check_guarantee = FLAGS_guarantee != "off" && !trades_shape;
-  opt.guard_worst = FLAGS_guarantee != "off";
-  opt.guard_means = keeps_means;
+  s.max_iterations = FLAGS_max_iterations;
+  s.max_seconds = FLAGS_max_seconds;
+  s.function_tolerance = FLAGS_function_tolerance;
+  s.threads = FLAGS_threads;
+  if (FLAGS_part_size >= 0) s.part_size = FLAGS_part_size;
+  s.max_sweeps = FLAGS_part_sweeps;
+  s.verbose = FLAGS_verbose;
+  if (FLAGS_recipe == "size_adapt") o->size_field = FLAGS_size_field;
+  o->shape_guard_weight = FLAGS_shape_guard_weight;
+  o->layer_edge_ratio = FLAGS_layer_edge_ratio;
+  o->max_sweeps = FLAGS_max_sweeps;
+  // Given files count as set options even before they are read.
+  if (!FLAGS_fixed_nodes.empty()) o->fixed.assign(1, 0);
+  // An option the recipe does not use is refused (not ignored).
+  const std::vector<RecipeOption> unused = unused_options(FLAGS_recipe, *o);
+  if (!unused.empty())
+    return fail(2, std::string("--") + recipe_option_flag(unused[0]) + " is not used by recipe " +
+                       FLAGS_recipe);
+  if (!FLAGS_size_field.empty() && o->size_field.empty() && o->target.size_field.empty())
+    return fail(
+        2, "--size_field is not used by recipe " + FLAGS_recipe + " without --target=size_field");
+  if (!FLAGS_moved.empty() && FLAGS_recipe != "preserve")
+    return fail(2, "--moved is not used by recipe " + FLAGS_recipe);
+  o->fixed.clear();
+  return 0;
+}
 
-  Mesh mesh;
+// What the run reads: the mesh (in tmop's convention), the reference and moved meshes.
+struct Inputs {
+  Mesh mesh, reference, moved;
+  WriteOptions write;
+  OrientationReport orientation;
+  bool flipped = false;
+};
+
+// Reads and checks every input file before any work: 0 or the exit code.
+int load_inputs(bool composed, RecipeOptions* o, Inputs* in) {
+  Mesh& mesh = in->mesh;
   Status s = read_mesh(FLAGS_input, &mesh);
   if (!s.ok()) return fail(2, s.message());
   s = validate_mesh(mesh);
   if (!s.ok()) return fail(2, FLAGS_input + ": " + s.message());
   // The output's format must hold this mesh: refuse now rather than after the optimization.
   // Node movement changes neither cell types nor connectivity, which is all the check needs.
-  WriteOptions wopt;
-  wopt.binary = FLAGS_binary;
-  wopt.msh_version = FLAGS_msh_version == "2.2" ? 22 : 41;
-  s = check_writable(FLAGS_output, mesh, wopt);
+  in->write.binary = FLAGS_binary;
+  in->write.msh_version = FLAGS_msh_version == "2.2" ? 22 : 41;
+  s = check_writable(FLAGS_output, mesh, in->write);
   if (!s.ok()) return fail(2, s.message());
-  // The recipe must fit the mesh and a --geometry must be well formed, near the mesh and used:
-  // usage errors, said before any work (recipe_geometry.h: check_geometry_spec).
-  if (FLAGS_recipe == "sliver" && !(mesh.dim() == 3 && mesh.space_dim == 3))
-    return fail(2, FLAGS_input + ": recipe sliver needs a volume mesh (tets), not a " +
-                       std::to_string(mesh.dim()) + "D mesh");
-  if (FLAGS_recipe == "surface" && !is_surface_mesh(mesh))
-    return fail(2, FLAGS_input + ": recipe surface needs a surface mesh (2D cells in 3D)");
-  if (!FLAGS_geometry.empty()) {
-    if (FLAGS_recipe == "preserve") return fail(2, "--geometry is not used by recipe preserve");
-    BoundaryOptions b = opt.boundary;
-    b.slide = slide;
-    s = check_geometry_spec(mesh, b);
+  if (!FLAGS_fixed_nodes.empty()) {
+    const std::string& f = FLAGS_fixed_nodes;
+    s = f.compare(0, 6, "field:") == 0 ? node_flags_from_field(mesh, f.substr(6), &o->fixed)
+                                       : read_node_list(f, mesh.num_vertices(), &o->fixed);
     if (!s.ok())
-      return fail(
-          2, s.message() + (!slide && !is_surface_mesh(mesh) ? " (add --boundary=slide)" : ""));
+      return fail(2, f.compare(0, 6, "field:") == 0
+                         ? FLAGS_input + ": --fixed_nodes: " + s.message()
+                         : s.message());
   }
-  if (!FLAGS_metric.empty() && !make_metric(FLAGS_metric, mesh.dim())) {
-    std::string known;
-    for (const std::string& n : metric_names(mesh.dim())) known += (known.empty() ? "" : ", ") + n;
-    return fail(2, "unknown --metric '" + FLAGS_metric + "' for " + std::to_string(mesh.dim()) +
-                       "D meshes (known: " + known + "; or W1*NAME1+W2*NAME2 with weights >= 0)");
+  if (!FLAGS_moved.empty()) {
+    s = read_mesh(FLAGS_moved, &in->moved);
+    if (!s.ok()) return fail(2, s.message());
+    o->moved = &in->moved;
   }
-  Mesh reference;
+  // The recipe must fit the mesh and a --geometry must be well formed, near the mesh and used:
+  // usage errors, said before any work (recipe.h: check_recipe).
+  s = check_recipe(FLAGS_recipe, mesh, *o);
+  if (!s.ok())
+    return fail(
+        2, (s.message().compare(0, 7, "recipe ") == 0 ? FLAGS_input + ": " : "") + s.message());
   if (!FLAGS_reference.empty()) {
-    s = read_mesh(FLAGS_reference, &reference);
+    s = read_mesh(FLAGS_reference, &in->reference);
     if (!s.ok()) return fail(2, s.message());
     // Checked before any work: a reference of another mesh is a usage error (exit 2).
-    if (!reference_matches(mesh, reference))
+    if (!reference_matches(mesh, in->reference))
       return fail(2, FLAGS_reference + ": its vertices and cells do not match those of " +
                          FLAGS_input + " (a reference mesh must have the same topology)");
-    opt.target.reference = &reference;
+    o->target.reference = &in->reference;
   }
-
   // A mesh written with the opposite orientation convention is not "all inverted": optimize it
   // in tmop's convention and write it back in its own. The boundary decides (orientation.h), so
   // a tangle of more than half the cells is still a tangle; --orientation states it instead.
-  const OrientationReport orientation = check_orientation(mesh);
-  const bool flipped = FLAGS_orientation == "auto" ? orientation.opposite_convention()
-                                                   : FLAGS_orientation == "opposite";
+  const OrientationReport& orientation = in->orientation = check_orientation(mesh);
+  const bool flipped = in->flipped = FLAGS_orientation == "auto" ? orientation.opposite_convention()
+                                                                 : FLAGS_orientation == "opposite";
   if (FLAGS_orientation == "auto" &&
       (flipped || 2 * orientation.negative > orientation.num_elements()))
     std::printf("note: %s: %s%s\n", FLAGS_input.c_str(), describe_orientation(orientation).c_str(),
@@ -435,107 +416,18 @@ int main(int argc, char** argv) {
                 FLAGS_input.c_str(), orientation.negative, orientation.num_elements());
   if (flipped) {
     reorient(&mesh);
-    if (opt.target.reference) reorient(&reference);
+    if (o->target.reference) reorient(&in->reference);
+    if (o->moved) reorient(&in->moved);
   }
   // Value counts, fields and the reference's topology are usage errors: say so before running.
   if (composed) {
-    s = check_composed_target(mesh, opt.target);
+    s = check_composed_target(mesh, o->target);
     if (!s.ok()) return fail(2, FLAGS_input + ": " + s.message());
   }
+  return 0;
+}
 
-  Mesh moved;
-  if (!FLAGS_moved.empty()) {
-    s = read_mesh(FLAGS_moved, &moved);
-    if (!s.ok()) return fail(2, s.message());
-    if (flipped) reorient(&moved);
-  }
-  if (slide && FLAGS_recipe != "auto" && FLAGS_recipe != "shape" && FLAGS_recipe != "untangle" &&
-      FLAGS_recipe != "surface" && FLAGS_recipe != "sliver" && FLAGS_recipe != "equal_edge" &&
-      FLAGS_recipe != "size_adapt" && FLAGS_recipe != "high_order" && FLAGS_recipe != "laplace")
-    return fail(2, "--boundary=slide is not available for recipe " + FLAGS_recipe);
-
-  RecipeResult result;
-  const IterationRecord before = measure_mesh(mesh, opt.rule);
-  GuaranteeBaseline baseline;
-  if (check_guarantee) baseline = guarantee_baseline(mesh, FLAGS_threads);
-  // --write_on_failure writes the better of the input and the recipe's result (fewer inverted
-  // cells; the input on a tie).
-  Mesh input_copy;
-  if (FLAGS_write_on_failure) input_copy = mesh;
-  const std::vector<double> input_coords = mesh.coords;
-  QualityReport quality_before = print_quality("before:", mesh);
-  quality_before.opposite_convention = flipped;  // as tmop_quality reports the input
-  if ((FLAGS_recipe == "shape" || FLAGS_recipe == "equal_edge" || FLAGS_recipe == "size_adapt" ||
-       FLAGS_recipe == "laplace") &&
-      before.inverted > 0)
-    return fail(1, FLAGS_input + ": " + std::to_string(before.inverted) +
-                       " inverted elements: recipe " + FLAGS_recipe +
-                       " needs a valid mesh (use --recipe=auto or untangle)");
-  if (FLAGS_recipe == "shape") {
-    s = improve_shape(&mesh, opt, &result);
-  } else if (FLAGS_recipe == "equal_edge") {
-    EqualEdgeOptions e;
-    if (!FLAGS_metric.empty()) e.metric = FLAGS_metric;
-    e.shape_guard_weight = FLAGS_shape_guard_weight;
-    if (FLAGS_sample_points != "default") e.rule = opt.rule;
-    e.solver = opt.solver;
-    e.guard_worst = opt.guard_worst;
-    e.slide = slide;
-    e.boundary = opt.boundary;
-    s = equal_edge(&mesh, e, &result);
-  } else if (FLAGS_recipe == "size_adapt") {
-    SizeAdaptOptions a;
-    a.size_field = FLAGS_size_field;
-    if (!FLAGS_metric.empty()) a.metric = FLAGS_metric;
-    if (FLAGS_power > 0) a.power = FLAGS_power;
-    a.rule = opt.rule;
-    a.solver = opt.solver;
-    a.slide = slide;
-    a.boundary = opt.boundary;
-    s = size_adapt(&mesh, a, &result);
-  } else if (FLAGS_recipe == "preserve") {
-    PreserveOptions p;
-    p.moved = &moved;
-    if (!FLAGS_metric.empty()) p.metric = FLAGS_metric;
-    p.rule = opt.rule;
-    p.solver = opt.solver;
-    s = preserve(&mesh, p, &result);
-  } else if (FLAGS_recipe == "sliver") {
-    SliverOptions sl;
-    sl.slide = slide;
-    sl.boundary = opt.boundary;
-    sl.rule = opt.rule;
-    sl.solver = opt.solver;
-    sl.guard_worst = opt.guard_worst;
-    sl.layer_edge_ratio = FLAGS_layer_edge_ratio;
-    s = remove_slivers(&mesh, sl, &result);
-  } else if (FLAGS_recipe == "laplace") {
-    LaplaceOptions l;
-    l.max_sweeps = FLAGS_max_sweeps;
-    l.slide = slide;
-    l.boundary = opt.boundary;
-    s = laplace(&mesh, l, &result);
-  } else if (FLAGS_recipe == "surface") {
-    UntangleOptions u;
-    u.rule = opt.rule;
-    u.solver = opt.solver;
-    u.slide = true;
-    u.boundary = opt.boundary;
-    u.shape = opt;
-    s = untangle(&mesh, u, &result);
-    result.recipe = "surface";
-  } else {
-    UntangleOptions u;
-    u.target = opt.target;  // untangle toward the reference when one is given
-    if (opt.target.type != TargetType::kReference) u.target.type = TargetType::kIdealEqualSize;
-    u.rule = opt.rule;
-    u.solver = opt.solver;
-    u.improve_shape_after = FLAGS_recipe == "auto" || FLAGS_recipe == "high_order";
-    u.slide = opt.slide;
-    u.boundary = opt.boundary;
-    u.shape = opt;
-    s = untangle(&mesh, u, &result);
-  }
+void print_stages(const RecipeResult& result) {
   for (const StageResult& st : result.stages) {
     // Under a power the solver minimises the power objective, which can fall while the mean
     // metric (the objective printed first) rises: print both.
@@ -547,15 +439,52 @@ int main(int argc, char** argv) {
                 st.name.c_str(), st.initial_objective, st.final_objective, power, st.iterations,
                 st.solves, st.seconds, st.termination.c_str());
   }
+}
+
+void print_notes(const RecipeResult& result, bool ok, bool unchanged) {
+  if (ok && result.guard_held_cells > 0)
+    std::printf(unchanged ? "guard: no move kept every guarantee (%d cells would have got worse): "
+                            "the mesh is unchanged; --guarantee=worst or off accepts a trade\n"
+                          : "guard: %d cells held at their input shape to keep the guarantees\n",
+                result.guard_held_cells);
+  if (result.layer_cells >= 0)
+    std::printf(result.recipe == "sliver"
+                    ? "boundary layer: %d cells, %d vertices held on its outer surface\n"
+                    : "boundary layer: %d cells kept, %d vertices held\n",
+                result.layer_cells, result.held_vertices);
+  if (result.certified >= 0)
+    std::printf("certified valid everywhere (Bernstein bound): %d of %d quadratic cells\n",
+                result.certified, result.certified + result.uncertified);
+}
+
+// The recipe on the inputs, the result checked, written and reported: the exit code.
+int run(const RecipeOptions& o, Inputs* in) {
+  Mesh& mesh = in->mesh;
+  GuaranteeOptions guarantees;
+  const bool check_guarantee = recipe_guarantees(FLAGS_recipe, o, &guarantees);
+  const int threads = FLAGS_threads;
+  GuaranteeBaseline baseline;
+  if (check_guarantee) baseline = guarantee_baseline(mesh, threads);
+  // --write_on_failure writes the better of the input and the recipe's result (fewer inverted
+  // cells; the input on a tie).
+  Mesh input_copy;
+  if (FLAGS_write_on_failure) input_copy = mesh;
+  const std::vector<double> input_coords = mesh.coords;
+  QualityReport quality_before = print_quality("before:", mesh);
+  quality_before.opposite_convention = in->flipped;  // as tmop_quality reports the input
+  int inverted = 0;
+  Status s = check_valid_input(FLAGS_recipe, mesh, o.rule, &inverted);
+  if (!s.ok()) return fail(1, FLAGS_input + ": " + s.message());
+  RecipeResult result;
+  s = run_recipe(FLAGS_recipe, &mesh, o, &result);
+  // A cancelled run ends as an interrupted one: nothing written, exit 130.
+  if (s.cancelled()) std::raise(SIGINT);
+  print_stages(result);
   // The guarantees, checked on the result independently of the recipe's own guard.
   bool guarantee_broken = false;
   if (s.ok() && check_guarantee) {
-    GuaranteeOptions g;
-    g.means = keeps_means;
-    // A tangled input is untangled: only new inversions count (docs/quality.md).
-    g.tangled_inversions_only = true;
     const std::vector<GuaranteeViolation> broken =
-        check_guarantees(baseline, guarantee_values(mesh, FLAGS_threads), g);
+        check_guarantees(baseline, guarantee_values(mesh, threads), guarantees);
     if (!broken.empty()) {
       guarantee_broken = true;
       s = Status::Failure(
@@ -585,52 +514,85 @@ int main(int argc, char** argv) {
                          : "best mesh written: " + std::to_string(now) +
                                " inverted cells, the input had " + std::to_string(was);
     }
-    result.after = measure_mesh(mesh, opt.rule);  // the mesh written (or left), not the recipe's
+    result.after = measure_mesh(mesh, o.rule);  // the mesh written (or left), not the recipe's
   }
   const bool write = recipe_status.ok() || FLAGS_write_on_failure;
-  const std::string status =
-      recipe_status.ok() ? std::string("ok") : recipe_status.message() + " (" + written_note + ")";
   QualityReport quality_after = print_quality("after:", mesh, !mesh.cell_data.empty());
-  quality_after.opposite_convention = flipped;  // written back in the input's convention
-  if (recipe_status.ok() && result.guard_held_cells > 0)
-    std::printf(mesh.coords == input_coords
-                    ? "guard: no move kept every guarantee (%d cells would have got worse): the "
-                      "mesh is unchanged; --guarantee=worst or off accepts a trade\n"
-                    : "guard: %d cells held at their input shape to keep the guarantees\n",
-                result.guard_held_cells);
-  if (result.layer_cells >= 0)
-    std::printf(result.recipe == "sliver"
-                    ? "boundary layer: %d cells, %d vertices held on its outer surface\n"
-                    : "boundary layer: %d cells kept, %d vertices held\n",
-                result.layer_cells, result.held_vertices);
-  if (result.certified >= 0)
-    std::printf("certified valid everywhere (Bernstein bound): %d of %d quadratic cells\n",
-                result.certified, result.certified + result.uncertified);
-
+  quality_after.opposite_convention = in->flipped;  // written back in the input's convention
+  print_notes(result, recipe_status.ok(), mesh.coords == input_coords);
   // Per-cell quality arrays of the input (a tmop_quality --output file) describe the old nodes.
   if (refresh_quality_fields(quality_after, &mesh))
     std::printf("quality fields of the input replaced by the result's\n");
-  if (flipped) reorient(&mesh);
+  if (in->flipped) reorient(&mesh);
   if (write) {
-    s = write_mesh(FLAGS_output, mesh, wopt);
+    s = write_mesh(FLAGS_output, mesh, in->write);
     if (!s.ok()) return fail(2, s.message());
     std::printf("wrote %s\n", FLAGS_output.c_str());
   }
   // The report is written on failure too: that is when it is needed.
   if (!FLAGS_report.empty()) {
+    tmop_tools::ReportInputs r;
+    r.input = FLAGS_input;
+    r.output = FLAGS_output;
+    r.written = write;
+    r.status = recipe_status.ok() ? std::string("ok")
+                                  : recipe_status.message() + " (" + written_note + ")";
+    r.settings_json = recipe_settings_json(FLAGS_recipe, mesh, o);
     s = write_file_atomically(
-        FLAGS_report, run_report(result, quality_before, quality_after, write, status) + "\n");
+        FLAGS_report, tmop_tools::run_report(r, result, quality_before, quality_after) + "\n");
     if (!s.ok()) return fail(2, s.message());
   }
   if (!recipe_status.ok()) {
     // A convention stated against the boundary's evidence is the likelier culprit.
     std::string hint;
+    const OrientationReport& orientation = in->orientation;
     if (orientation.evidence() == OrientationReport::Evidence::kBoundary &&
-        flipped != orientation.opposite_convention())
+        in->flipped != orientation.opposite_convention())
       hint = "; the boundary says " +
              std::string(orientation.opposite_convention() ? "the opposite" : "Gmsh's") +
              " convention: try --orientation=auto";
     return fail(1, FLAGS_input + ": " + recipe_status.message() + " (" + written_note + ")" + hint);
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  gflags::SetUsageMessage(
+      "improve a mesh by node movement\n"
+      "  tmop_optimize --input=IN --output=OUT [--recipe=" +
+      tmop::recipe_names() + "] [flags]");
+#ifdef __GLIBC__
+  // A fixed mmap threshold: glibc's adaptive one rises to the size of freed buffers (reading,
+  // the quality report), after which multi-MB vectors land in the heap and leave it fragmented;
+  // 1M tets: peak 1,029 -> 988 MB, the same time (docs/benchmarks.md).
+  mallopt(M_MMAP_THRESHOLD, 4 << 20);
+#endif
+  tmop_tools::parse_flags(&argc, &argv);
+  if (!FLAGS_from_report.empty()) {
+    const tmop::Status s = tmop_tools::apply_report_flags(FLAGS_from_report);
+    if (!s.ok()) return fail(2, s.message());
+  }
+  // Ctrl-C or a SIGTERM mid-run: temporary files removed, one line on stderr, exit 130.
+  tmop::remove_temporaries_on_signal("tmop_optimize");
+  // Ceres reports through glog; the tool reports itself (one line on failure).
+  FLAGS_minloglevel = FLAGS_verbose ? 1 : 3;
+  google::InitGoogleLogging(argv[0]);
+  if (FLAGS_list_metrics) {
+    for (int d = 2; d <= 3; ++d) {
+      std::printf("%dD:", d);
+      for (const std::string& n : tmop::metric_names(d)) std::printf(" %s", n.c_str());
+      std::printf("\n");
+    }
+    std::printf("weighted combinations of two: W1*NAME1+W2*NAME2 (weights >= 0, default 1)\n");
+    return 0;
+  }
+  if (const int rc = check_flags(argc, argv)) return rc;
+  tmop::RecipeOptions options;
+  bool composed = false;
+  if (const int rc = options_from_flags(&options, &composed)) return rc;
+  Inputs in;
+  if (const int rc = load_inputs(composed, &options, &in)) return rc;
+  return run(options, &in);
 }

@@ -20,8 +20,16 @@ class Status {
   Status() = default;  // OK
   static Status Ok() { return Status(); }
   static Status Failure(std::string message) { return Status(std::move(message)); }
+  // A run stopped on request (a progress callback returned false, a cancel flag was raised): not
+  // ok(), and cancelled() tells it from a failure. The caller's data is in a valid state.
+  static Status Cancelled(std::string message) {
+    Status s(std::move(message));
+    s.cancelled_ = true;
+    return s;
+  }
 
   bool ok() const { return !failed_; }
+  bool cancelled() const { return cancelled_; }
   explicit operator bool() const { return ok(); }
   // One line, no trailing newline; empty when ok().
   const std::string& message() const { return message_; }
@@ -29,6 +37,7 @@ class Status {
  private:
   explicit Status(std::string message) : failed_(true), message_(std::move(message)) {}
   bool failed_ = false;
+  bool cancelled_ = false;
   std::string message_;
 };
 

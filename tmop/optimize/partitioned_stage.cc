@@ -238,7 +238,17 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
                      spec.name.c_str(), sweep, names[ph], totals.parts, totals.min_iterations,
                      totals.max_iterations, rec.objective, rec.solver_objective, rec.min_quality,
                      rec.inverted, rec.seconds);
-      if (so.progress) so.progress(rec);
+      if (so.progress) {
+        ProgressRecord pr;
+        static_cast<IterationRecord&>(pr) = rec;
+        pr.stage = spec.name;
+        so.progress(pr);
+      }
+      if (so.progress.cancelled()) {  // the next phase does not start
+        *reason = "cancelled";
+        out_of_time = true;
+        break;
+      }
     }
     result->sweeps = sweep;
     cost = sweep_initial - sweep_decrease;

@@ -5,9 +5,13 @@
 #ifndef TMOP_OPTIMIZE_SOLVER_OPTIONS_H_
 #define TMOP_OPTIMIZE_SOLVER_OPTIONS_H_
 
+#include <atomic>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 namespace tmop {
 
@@ -25,6 +29,59 @@ struct IterationRecord {
   double min_quality = 0;  // worst shape quality over sample points (1 ideal, <= 0 inverted)
   int inverted = 0;        // elements with det A <= 0 at a sample point
   double seconds = 0;      // wall time since the stage started
+};
+
+// What a progress callback sees: the iteration's record and the stage it belongs to ("untangle",
+// "shape", "shape (guard round 1)", "laplace", ...: StageSpec::name). A callback that takes a
+// const IterationRecord& accepts it too.
+struct ProgressRecord : IterationRecord {
+  std::string stage;
+};
+
+// SolverOptions::progress: called after every iteration of every stage it is given to. It may
+// return void (only watch) or bool: false cancels the run. Cancelling is sticky and shared by
+// every copy of the callback (a recipe copies its SolverOptions into each stage, so one callback
+// set once sees every stage and one false stops them all): the stage that is running ends at
+// this iteration (Ceres terminates with the last accepted iterate, so a barrier stage never
+// leaves an inverted mesh), later iterations and stages are not reported, and the recipe returns
+// Status::Cancelled. cancel() does the same from outside the callback (another thread).
+class ProgressCallback {
+ public:
+  ProgressCallback() = default;
+  ProgressCallback(std::nullptr_t) {}  // NOLINT: `progress = nullptr` clears it
+  template <typename F,
+            typename = std::enable_if_t<std::is_invocable_v<F&, const ProgressRecord&> &&
+                                        !std::is_same_v<std::decay_t<F>, ProgressCallback>>>
+  ProgressCallback(F f)  // NOLINT: lambdas convert implicitly, as to std::function
+      : state_(std::make_shared<State>()) {
+    if constexpr (std::is_void_v<std::invoke_result_t<F&, const ProgressRecord&>>)
+      state_->call = [f = std::move(f)](const ProgressRecord& r) mutable {
+        f(r);
+        return true;
+      };
+    else
+      state_->call = [f = std::move(f)](const ProgressRecord& r) mutable {
+        return static_cast<bool>(f(r));
+      };
+  }
+  explicit operator bool() const { return state_ != nullptr; }
+  // Reports one record; false when the run is (or now becomes) cancelled.
+  bool operator()(const ProgressRecord& record) const {
+    if (!state_ || state_->cancelled.load()) return !state_;
+    if (!state_->call(record)) state_->cancelled.store(true);
+    return !state_->cancelled.load();
+  }
+  bool cancelled() const { return state_ && state_->cancelled.load(); }
+  void cancel() const {
+    if (state_) state_->cancelled.store(true);
+  }
+
+ private:
+  struct State {
+    std::function<bool(const ProgressRecord&)> call;
+    std::atomic<bool> cancelled{false};
+  };
+  std::shared_ptr<State> state_;
 };
 
 // The default limits of SolverOptions::cholesky_max_free_coordinates_2d / _3d (-1).
@@ -101,11 +158,11 @@ struct SolverOptions {
   double sweep_tolerance = 5e-3;
 
   int threads = 0;  // 0: all hardware threads
-  // Called after every iteration (also iteration 0) when set; verbose prints a line to stderr.
-  // Without either, the per-iteration history records the solver's objective only (the
-  // objective, worst quality and inverted count cost passes over the mesh; they are measured
-  // before and after the stage).
-  std::function<void(const IterationRecord&)> progress;
+  // Called after every iteration (also iteration 0) when set, with the stage's name; returning
+  // false cancels (ProgressCallback above). verbose prints a line to stderr. Without either, the
+  // per-iteration history records the solver's objective only (the objective, worst quality and
+  // inverted count cost passes over the mesh; they are measured before and after the stage).
+  ProgressCallback progress;
   bool verbose = false;
 };
 

@@ -69,7 +69,11 @@ class StageCallback final : public ceres::IterationCallback {
                    "  %.2f s\n",
                    spec_.name.c_str(), rec.iteration, rec.objective, rec.solver_objective,
                    rec.min_quality, rec.inverted, rec.seconds);
-    if (spec_.solver.progress) spec_.solver.progress(rec);
+    // Cancelled (now or in an earlier stage or round): stop with the last accepted iterate.
+    if (spec_.solver.progress.cancelled() || !report_progress(rec)) {
+      reason_ = "cancelled by the progress callback";
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
 
     if (s.iteration == 0) {  // a new solve (frame or eps round): its own counts
       initial_gradient_ = s.gradient_max_norm;
@@ -130,6 +134,14 @@ class StageCallback final : public ceres::IterationCallback {
   }
 
   const std::string& reason() const { return reason_; }
+  // True when the run goes on (no callback, or the callback did not cancel).
+  bool report_progress(const IterationRecord& rec) const {
+    if (!spec_.solver.progress) return true;
+    ProgressRecord p;
+    static_cast<IterationRecord&>(p) = rec;
+    p.stage = spec_.name;
+    return spec_.solver.progress(p);
+  }
   // The scale m of a power objective (0: the plain objective).
   void set_power_scale(double m) { power_scale_ = m; }
 

@@ -183,6 +183,15 @@ Status laplace(Mesh* mesh, const LaplaceOptions& options, RecipeResult* result) 
     rec.iteration = sweep + 1;
     rec.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stage.history.push_back(rec);
+    if (options.progress) {
+      ProgressRecord p;
+      static_cast<IterationRecord&>(p) = rec;
+      p.stage = stage.name;
+      if (!options.progress(p)) {
+        stage.termination = "cancelled by the progress callback";
+        break;
+      }
+    }
     if (moved == 0 || max_relative_move < options.tolerance) {
       stage.termination = "no vertex moved more than tolerance x its mean edge length";
       break;
@@ -196,6 +205,7 @@ Status laplace(Mesh* mesh, const LaplaceOptions& options, RecipeResult* result) 
   stage.solves = 0;
   stage.linear_solver = "none";
   result->stages.push_back(stage);
+  if (options.progress.cancelled()) return Status::Cancelled("laplace: cancelled");
   return Status::Ok();
 }
 

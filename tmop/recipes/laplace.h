@@ -47,6 +47,10 @@ struct LaplaceOptions {
   // surface (geometry/boundary_constraints.h); corners stay. Volume and planar meshes.
   bool slide = false;
   BoundaryOptions boundary;
+  // Called after every sweep with stage "laplace" (optimize/solver_options.h); returning false
+  // stops after that sweep (the mesh is as the sweep left it: every move kept its cells valid)
+  // and laplace returns Status::Cancelled.
+  ProgressCallback progress;
 };
 
 Status laplace(Mesh* mesh, const LaplaceOptions& options, RecipeResult* result);

@@ -178,6 +178,13 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
     Status s = optimize_stage(mesh, stage, &sr);
     if (!s.ok()) return s;
     if (sr.solves > 0) result->stages.push_back(sr);
+    if (options.solver.progress.cancelled()) {
+      // Stopped mid-schedule: the stage kept its best state; never more inverted than the input.
+      if (count_inverted(*mesh, options.solver.threads) > inverted_at_start)
+        mesh->coords = input_coords;
+      finish();
+      return Status::Cancelled("untangle: cancelled");
+    }
     if (!sr.inverted_cells.empty()) {
       // Never more inverted cells than the input had, as tmop_quality counts them (the stage
       // keeps its best round by its own sample points, which can differ for quadratic cells).
@@ -201,6 +208,10 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
       result->layer_cells = shape_result.layer_cells;
       result->held_vertices = shape_result.held_vertices;
       result->guard_held_cells = shape_result.guard_held_cells;
+      if (shape.solver.progress.cancelled()) {
+        finish();
+        return Status::Cancelled("shape: cancelled");
+      }
     }
     if (!options.certify || with_certificate == 0) break;
     const std::size_t points_before = extra.size();
