@@ -13,6 +13,7 @@
 #include <set>
 
 #include "tests/geometry/geometry_test_meshes.h"
+#include "tests/temp_dir.h"
 #include "tmop/geometry/cylinder_manifold.h"
 #include "tmop/geometry/plane_manifold.h"
 #include "tmop/geometry/polyline_manifold.h"
@@ -207,7 +208,7 @@ TEST(BoundaryConstraints, ReferenceSurfaceFile) {
   const float facet[12] = {0, 0, 1, 9, 9, 9, 9, 9, 9, 8, 9, 9};  // normal, corners 1 = 2
   bytes.append(reinterpret_cast<const char*>(facet), sizeof facet);
   bytes.append(2, '\0');  // attribute byte count
-  const std::string with_degenerate = ::testing::TempDir() + "cavity_sphere_degenerate.stl";
+  const std::string with_degenerate = testing_tmp::dir() + "cavity_sphere_degenerate.stl";
   std::ofstream(with_degenerate, std::ios::binary) << bytes;
   options.geometry = with_degenerate;
   auto repaired = build(mesh, options);
@@ -220,7 +221,7 @@ TEST(BoundaryConstraints, ReferenceSurfaceFile) {
 // the file and the place (OpenMesh's reader, used before, allocated 16 GB for the OFF below),
 // and quads are split into two triangles.
 TEST(ReferenceSurface, MalformedFilesAreRefusedWithTheirPlaceAndQuadsAreSplit) {
-  const std::string dir = ::testing::TempDir();
+  const std::string dir = testing_tmp::dir();
   auto write = [&](const std::string& name, const std::string& text) {
     std::ofstream(dir + name) << text;
     return dir + name;
@@ -248,7 +249,7 @@ TEST(ReferenceSurface, MalformedFilesAreRefusedWithTheirPlaceAndQuadsAreSplit) {
 // What scanners and CAD exporters write, and a mesh reader refuses (read_mesh stays strict),
 // is fine as geometry: degenerate facets are dropped with their vertices, polygons become fans.
 TEST(ReferenceSurface, DegenerateFacetsAreDroppedAndPolygonsSplit) {
-  const std::string dir = ::testing::TempDir();
+  const std::string dir = testing_tmp::dir();
   auto write = [&](const std::string& name, const std::string& text) {
     std::ofstream(dir + name) << text;
     return dir + name;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "tests/quality/test_meshes.h"
+#include "tests/temp_dir.h"
 #include "tmop/io/mesh_io.h"
 
 namespace tmop {
@@ -40,7 +41,7 @@ TEST(QualityFields, SurviveAVtuRoundTrip) {
   Mesh m = testing_meshes::tet_block(2, 0.2);
   const QualityReport r = compute_quality(m);
   add_quality_fields(r, &m);
-  const std::string path = ::testing::TempDir() + "quality_fields.vtu";
+  const std::string path = testing_tmp::dir() + "quality_fields.vtu";
   const Status written = write_mesh(path, m);
   ASSERT_TRUE(written.ok()) << written.message();
   Mesh back;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "tests/quality/test_meshes.h"
+#include "tests/temp_dir.h"
 
 namespace tmop {
 namespace {
@@ -15,7 +16,7 @@ using testing_meshes::have_python;
 using testing_meshes::run;
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = testing_tmp::dir() + name;
   std::ofstream(path) << text;
   return path;
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "tests/quality/test_meshes.h"
+#include "tests/temp_dir.h"
 
 namespace tmop {
 namespace {
@@ -18,7 +19,7 @@ void expect_well_formed_svg(const std::string& svg, const std::string& name) {
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
   if (!have_python()) GTEST_SKIP() << "/usr/bin/python3 not available";
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = testing_tmp::dir() + name;
   std::ofstream(path) << svg;
   EXPECT_TRUE(
       run("/usr/bin/python3 -c \"import sys, xml.etree.ElementTree as E; "

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "tests/quality/test_meshes.h"
+#include "tests/temp_dir.h"
 #include "tmop/io/mesh_io.h"
 
 namespace tmop {
@@ -26,7 +27,7 @@ class TmopQualityTool : public ::testing::Test {
  protected:
   void SetUp() override {
     if (exit_code("test -x " + kTool) != 0) GTEST_SKIP() << kTool << " not built";
-    dir_ = ::testing::TempDir();
+    dir_ = testing_tmp::dir();
     input_ = dir_ + "tool_input.vtu";
     ASSERT_TRUE(write_mesh(input_, testing_meshes::tet_block(2, 0.2)).ok());
   }

@@ -9,6 +9,7 @@
 
 #include "tests/optimize/grid_meshes.h"
 #include "tests/recipes/recipe_test_meshes.h"
+#include "tests/temp_dir.h"
 #include "tmop/io/mesh_io.h"
 
 namespace tmop {
@@ -38,7 +39,7 @@ class TmopCompareTool : public ::testing::Test {
  protected:
   void SetUp() override {
     if (exit_code("test -x " + kTool) != 0) GTEST_SKIP() << kTool << " not built";
-    dir_ = ::testing::TempDir();
+    dir_ = testing_tmp::dir();
     Mesh a = testing_grid::grid(CellType::kQuad4, 4);
     Mesh b = a;
     b.vertex(6)[0] += 0.05;  // vertex (1, 1) of the 4 x 4 grid, spacing 0.25: h/5

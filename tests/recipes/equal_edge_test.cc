@@ -8,6 +8,7 @@
 
 #include "tests/optimize/grid_meshes.h"
 #include "tests/recipes/recipe_test_meshes.h"
+#include "tests/temp_dir.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/quality_report.h"
 
@@ -64,7 +65,7 @@ class EqualEdgeGmsh : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!testing_recipes::have_gmsh()) GTEST_SKIP() << "gmsh not available";
-    ASSERT_TRUE(testing_recipes::graded_quad_mesh(::testing::TempDir(), &mesh_));
+    ASSERT_TRUE(testing_recipes::graded_quad_mesh(testing_tmp::dir(), &mesh_));
     ASSERT_EQ(mesh_.count_by_type()[static_cast<int>(CellType::kQuad4)], mesh_.num_cells());
     const EdgeStats s = free_edge_stats(mesh_, boundary_vertex_mask(mesh_));
     ASSERT_GT(s.max / s.min, 10.0) << "the fixture should have a strong size gradation";

@@ -8,6 +8,7 @@
 
 #include "tests/optimize/grid_meshes.h"
 #include "tests/recipes/recipe_test_meshes.h"
+#include "tests/temp_dir.h"
 #include "tmop/quality/quality_report.h"
 
 namespace tmop {
@@ -77,7 +78,7 @@ TEST(Laplace, RecoversTheRegularGrid) {
 TEST(Laplace, GradedTrianglesStayValid) {
   if (!testing_recipes::have_gmsh()) GTEST_SKIP() << "gmsh not available";
   Mesh mesh;
-  ASSERT_TRUE(testing_recipes::graded_mesh(::testing::TempDir(), false, &mesh));
+  ASSERT_TRUE(testing_recipes::graded_mesh(testing_tmp::dir(), false, &mesh));
   std::mt19937 rng(11);
   testing_recipes::perturb_valid(&mesh, boundary_vertex_mask(mesh), 0.35, &rng);
   const Mesh perturbed = mesh;

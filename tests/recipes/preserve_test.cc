@@ -8,6 +8,7 @@
 
 #include "tests/optimize/grid_meshes.h"
 #include "tests/recipes/recipe_test_meshes.h"
+#include "tests/temp_dir.h"
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/quality_report.h"
@@ -102,7 +103,7 @@ TEST(PreserveSine, QuadGrid) {
 TEST(PreserveSine, UnstructuredTriangles) {
   if (!testing_recipes::have_gmsh()) GTEST_SKIP() << "gmsh not available";
   Mesh mesh;
-  ASSERT_TRUE(testing_recipes::uniform_tri_mesh(::testing::TempDir(), 1.0 / kN, &mesh));
+  ASSERT_TRUE(testing_recipes::uniform_tri_mesh(testing_tmp::dir(), 1.0 / kN, &mesh));
   check_bent_top({"tri3_unstructured", mesh, CellType::kTri3, 0.1});
 }
 

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "tests/recipes/recipe_test_meshes.h"
+#include "tests/temp_dir.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/quality_report.h"
 #include "tmop/target/target.h"
@@ -42,7 +43,7 @@ class SizeAdaptGraded : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!testing_recipes::have_gmsh()) GTEST_SKIP() << "gmsh not available";
-    ASSERT_TRUE(testing_recipes::graded_mesh(::testing::TempDir(), false, &graded_));
+    ASSERT_TRUE(testing_recipes::graded_mesh(testing_tmp::dir(), false, &graded_));
     fixed_ = boundary_vertex_mask(graded_);
     sizes_ = cell_sizes(graded_);
     // The size field of the unperturbed mesh: each vertex's mean incident edge length.

@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "tests/temp_dir.h"
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/fold_check.h"
 #include "tmop/mesh/topology.h"
@@ -22,7 +23,7 @@ bool have_gmsh() { return std::system("gmsh --version > /dev/null 2>&1") == 0; }
 
 // geo: gmsh geometry text; dim: 2 or 3.
 Mesh gmsh_mesh(const std::string& name, const std::string& geo, int dim) {
-  const std::string dir = "/tmp/tmop_untangle_gmsh_" + name;
+  const std::string dir = testing_tmp::dir() + "untangle_gmsh_" + name;
   std::system(("mkdir -p " + dir).c_str());
   std::ofstream(dir + "/m.geo") << geo;
   const std::string cmd = "gmsh -" + std::to_string(dim) + " " + dir + "/m.geo -format msh41 -o " +
