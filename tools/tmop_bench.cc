@@ -243,6 +243,11 @@ void add_recipe(const tmop::RecipeResult& r, const tmop::Status& s, Json* j) {
         .num("final_objective", st.final_objective)
         .integer("sample_points", st.num_sample_points)
         .integer("free_vertices", st.num_free_vertices)
+        .integer("parts", st.parts)
+        .integer("sweeps", st.sweeps)
+        .integer("element_iterations",
+                 st.parts ? st.part_element_iterations
+                          : static_cast<std::int64_t>(st.num_elements) * st.iterations)
         .str("termination", st.termination);
     // Ceres's own split of the time, and the scaling figures of docs/benchmarks.md: minimizer
     // time per element and iteration, linear-solver time per element and inner iteration.

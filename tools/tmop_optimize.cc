@@ -124,6 +124,9 @@ DEFINE_int32(part_size, -1,
              "on --threads; 0: one problem over the whole mesh; -1: the library's default "
              "(docs/partitioning.md).");
 DEFINE_int32(part_sweeps, 4, "Partitioned stages: at most this many sweeps over the parts.");
+DEFINE_int32(part_rings, 2,
+             "Partitioned stages: sweeps after the first re-solve only the vertices within this "
+             "many element rings of what moved since; 0: whole parts again.");
 DEFINE_string(report, "", "Write a JSON report of the run to this file.");
 DEFINE_bool(binary, false, "Write binary output where the format has a binary form.");
 DEFINE_string(msh_version, "4.1",
@@ -236,6 +239,7 @@ int check_flags(int argc, char** argv) {
   if (FLAGS_threads < 0) return fail(2, "--threads must be >= 0 (0: all cores)");
   if (FLAGS_part_size < -1) return fail(2, "--part_size must be >= 0 (0: one problem)");
   if (FLAGS_part_sweeps < 1) return fail(2, "--part_sweeps must be >= 1");
+  if (FLAGS_part_rings < 0) return fail(2, "--part_rings must be >= 0");
   if (!(FLAGS_power >= 1 || FLAGS_power == 0)) return fail(2, "--power must be >= 1 (or 0)");
   if (!(FLAGS_feature_angle > 0 && FLAGS_feature_angle < 180))
     return fail(2, "--feature_angle must be in (0, 180) degrees");
@@ -330,6 +334,7 @@ int options_from_flags(RecipeOptions* o, bool* composed) {
   s.threads = FLAGS_threads;
   if (FLAGS_part_size >= 0) s.part_size = FLAGS_part_size;
   s.max_sweeps = FLAGS_part_sweeps;
+  s.sweep_rings = FLAGS_part_rings;
   s.verbose = FLAGS_verbose;
   if (FLAGS_recipe == "size_adapt") o->size_field = FLAGS_size_field;
   o->shape_guard_weight = FLAGS_shape_guard_weight;

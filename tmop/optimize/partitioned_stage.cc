@@ -45,9 +45,57 @@ Pieces pieces_of(const Mesh& mesh, const VertexCells& vc, const std::vector<int>
   return pieces;
 }
 
+// Marks the vertices within `rings` rings of elements around the vertices whose coordinates
+// differ from `before`.
+std::vector<char> near_moved(const Mesh& mesh, const VertexCells& vc,
+                             const std::vector<double>& before, int rings) {
+  const int n = mesh.num_vertices(), sd = mesh.space_dim;
+  std::vector<char> mark(n, 0);
+  std::vector<int> front;
+  for (int v = 0; v < n; ++v)
+    for (int a = 0; a < sd; ++a)
+      if (mesh.coords[static_cast<std::size_t>(v) * sd + a] !=
+          before[static_cast<std::size_t>(v) * sd + a]) {
+        mark[v] = 1;
+        front.push_back(v);
+        break;
+      }
+  for (int r = 0; r < rings; ++r) {
+    std::vector<int> next;
+    for (int v : front)
+      for (const std::int32_t* c = vc.begin(v); c != vc.end(v); ++c)
+        for (int i = 0; i < mesh.cell_size(*c); ++i) {
+          const int u = mesh.cell(*c)[i];
+          if (!mark[u]) {
+            mark[u] = 1;
+            next.push_back(u);
+          }
+        }
+    front.swap(next);
+  }
+  return mark;
+}
+
+// The pieces' vertices that `keep` marks, empty pieces dropped. Solving only near what moved
+// is an approximation (the far vertices' optimum moves a little too), so a piece is restricted
+// only where that at least halves its vertices; otherwise it is solved whole again.
+Pieces restrict_pieces(const Pieces& pieces, const std::vector<char>& keep) {
+  Pieces out;
+  for (const std::vector<int>& p : pieces) {
+    std::vector<int> q;
+    for (int v : p)
+      if (keep[v]) q.push_back(v);
+    if (2 * q.size() > p.size())
+      out.push_back(p);
+    else if (!q.empty())
+      out.push_back(std::move(q));
+  }
+  return out;
+}
+
 struct PhaseTotals {
   double initial_cost = 0, final_cost = 0;
-  int parts = 0, min_iterations = 0, max_iterations = 0;
+  int parts = 0, vertices = 0, min_iterations = 0, max_iterations = 0;
 };
 
 // Solves the pieces of one phase side by side on `threads` workers (largest first); each reads
@@ -78,6 +126,7 @@ Status run_phase(Mesh* mesh, const StageContext& ctx, const IdealTable& table,
   for (std::thread& t : pool) t.join();
   *totals = PhaseTotals();
   totals->parts = static_cast<int>(pieces.size());
+  for (const std::vector<int>& p : pieces) totals->vertices += static_cast<int>(p.size());
   totals->min_iterations = pieces.empty() ? 0 : 1 << 30;
   for (const PartOutcome& o : outcomes) {
     if (!o.ok) return Status::Failure(o.error);
@@ -86,6 +135,7 @@ Status run_phase(Mesh* mesh, const StageContext& ctx, const IdealTable& table,
     totals->min_iterations = std::min(totals->min_iterations, o.iterations);
     totals->max_iterations = std::max(totals->max_iterations, o.iterations);
     result->iterations += o.iterations;
+    result->part_element_iterations += static_cast<std::int64_t>(o.elements) * o.iterations;
     ++result->solves;
     StageResult::Times& t = result->times;
     t.preprocessor += o.times.preprocessor;
@@ -196,6 +246,9 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
     rec.inverted = -1;
     result->history.push_back(rec);
   }
+  // The coordinates as each phase left them: a later sweep re-solves only the vertices near
+  // those that moved since (the rest of its parts is where that phase left it at its optimum).
+  std::vector<std::vector<double>> after(3);
   bool out_of_time = false;
   for (int sweep = 1; sweep <= std::max(1, so.max_sweeps) && !out_of_time; ++sweep) {
     const double sweep_initial = cost;
@@ -209,10 +262,19 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
         break;
       }
       if (phases[ph]->empty()) continue;
+      Pieces restricted;
+      const Pieces* pieces = phases[ph];
+      if (!after[ph].empty() && so.sweep_rings > 0) {
+        restricted = restrict_pieces(*pieces, near_moved(*mesh, vc, after[ph], so.sweep_rings));
+        pieces = &restricted;
+      }
       PhaseTotals totals;
-      s = run_phase(mesh, ctx, table, vc, cp, *phases[ph], threads, so.max_seconds - elapsed,
-                    &scratch, result, &totals);
-      if (!s.ok()) return s;
+      if (!pieces->empty()) {
+        s = run_phase(mesh, ctx, table, vc, cp, *pieces, threads, so.max_seconds - elapsed,
+                      &scratch, result, &totals);
+        if (!s.ok()) return s;
+      }
+      if (so.sweep_rings > 0) after[ph] = mesh->coords;
       sweep_decrease += totals.initial_cost - totals.final_cost;
       IterationRecord rec;
       rec.iteration = ++record;
@@ -233,9 +295,9 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
       result->history.push_back(rec);
       if (so.verbose)
         std::fprintf(stderr,
-                     "  [%s] sweep %d %s: %4d parts, %d-%d iterations  objective %.6e  (solver "
+                     "  [%s] sweep %d %s: %4d parts, %7d vertices, %d-%d iterations  objective %.6e  (solver "
                      "%.6e)  min quality %.4f  inverted %d  %.2f s\n",
-                     spec.name.c_str(), sweep, names[ph], totals.parts, totals.min_iterations,
+                     spec.name.c_str(), sweep, names[ph], totals.parts, totals.vertices, totals.min_iterations,
                      totals.max_iterations, rec.objective, rec.solver_objective, rec.min_quality,
                      rec.inverted, rec.seconds);
       if (so.progress) {

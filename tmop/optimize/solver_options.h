@@ -152,10 +152,17 @@ struct SolverOptions {
   // each, the cut vertices held), then the cuts in the parts of a second partition whose cuts
   // avoid the first's, in sweeps until a sweep lowers the solver's objective by less than
   // sweep_tolerance of itself or max_sweeps were made. 0: one problem over the whole mesh.
-  // Untangling and surface stages always solve one problem.
-  int part_size = 0;
+  // Untangling and surface stages always solve one problem. The default (meshes of 200k
+  // elements and more are partitioned) is measured in docs/partitioning.md: less time and
+  // memory than one problem from 300k tets up, more time below.
+  int part_size = 100000;
   int max_sweeps = 4;
   double sweep_tolerance = 5e-3;
+  // Sweeps after the first re-solve, in each phase, only the free vertices within sweep_rings
+  // rings of elements of a vertex that moved since that phase last ran, in the parts where
+  // that at least halves the part (an approximation: docs/partitioning.md has its cost).
+  // 0: whole phases again.
+  int sweep_rings = 2;
 
   int threads = 0;  // 0: all hardware threads
   // Called after every iteration (also iteration 0) when set, with the stage's name; returning

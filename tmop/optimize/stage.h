@@ -10,6 +10,7 @@
 #ifndef TMOP_OPTIMIZE_STAGE_H_
 #define TMOP_OPTIMIZE_STAGE_H_
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -112,8 +113,10 @@ struct StageResult {
   int num_elements = 0, num_sample_points = 0, num_free_vertices = 0;
   std::string linear_solver;
   // Partitioned stages (SolverOptions::part_size): the parts of the first partition, the
-  // sweeps made; 0 for one problem.
+  // sweeps made, and the work: elements x iterations summed over the part solves (0 for one
+  // problem, whose work is num_elements x iterations).
   int parts = 0, sweeps = 0;
+  std::int64_t part_element_iterations = 0;
   int solves = 0;  // Ceres solves (1, or the surface frame rounds or untangling rounds)
   double min_det_before = 0, min_det_after = 0;  // min det T over sample points (term 0)
   double final_eps = 0;                          // untangling: eps of the last solve
