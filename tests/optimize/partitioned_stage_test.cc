@@ -12,6 +12,7 @@
 #include "grid_meshes.h"
 #include "tmop/mesh/topology.h"
 #include "tmop/optimize/stage.h"
+#include "tmop/quality/guarantees.h"
 #include "tmop/recipes/improve_shape.h"
 
 namespace tmop {
@@ -83,6 +84,20 @@ TEST_P(PartitionedStage, TheThreadsDoNotChangeTheResult) {
   run(&one, k.part_size, 1);
   run(&two, k.part_size, 2);
   EXPECT_EQ(one.coords, two.coords);
+}
+
+// The shape recipe's guarantees (docs/quality.md: per type, no worse worst or mean, no new
+// sliver or inversion) hold when its stage is partitioned, as they do for one problem.
+TEST_P(PartitionedStage, ShapeGuaranteesHoldInParts) {
+  const Case k = GetParam();
+  const Mesh start = input(k);
+  Mesh parts = start;
+  const RecipeResult r = run(&parts, k.part_size, 2);
+  ASSERT_FALSE(r.stages.empty());
+  EXPECT_GE(r.stages.front().parts, 4);
+  const std::vector<GuaranteeViolation> broken =
+      check_guarantees(guarantee_baseline(start, 1), guarantee_values(parts, 1));
+  for (const GuaranteeViolation& v : broken) ADD_FAILURE() << v.message();
 }
 
 INSTANTIATE_TEST_SUITE_P(Types, PartitionedStage,
