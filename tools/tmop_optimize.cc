@@ -123,6 +123,9 @@ DEFINE_int32(part_size, -1,
              "Partitioned shape stages: elements per part (METIS), parts solved side by side "
              "on --threads; 0: one problem over the whole mesh; -1: the library's default "
              "(docs/partitioning.md).");
+DEFINE_string(partitions, "auto",
+              "Partitioned shape stages: auto (parts of --part_size elements from 2 parts' worth "
+              "up), 1 (one problem) or K (K parts, at least 64 elements each).");
 DEFINE_int32(part_sweeps, 4, "Partitioned stages: at most this many sweeps over the parts.");
 DEFINE_int32(part_rings, 2,
              "Partitioned stages: sweeps after the first re-solve only the vertices within this "
@@ -214,6 +217,14 @@ QualityReport print_quality(const char* label, const Mesh& mesh, bool keep_per_c
 }
 
 // Usage errors of the flags alone, said before any file is read: 0, or the exit code.
+// --partitions as a count: 1 or K >= 2; 0 when it is not a whole number in [1, 2^31).
+int partitions_from_flag() {
+  const std::string& f = FLAGS_partitions;
+  if (f.empty() || f.size() > 10 || f.find_first_not_of("0123456789") != std::string::npos) return 0;
+  const long long k = std::stoll(f);
+  return k >= 1 && k <= 2147483647LL ? static_cast<int>(k) : 0;
+}
+
 int check_flags(int argc, char** argv) {
   if (argc > 1)
     return fail(2, std::string("unexpected argument '") + argv[1] +
@@ -239,6 +250,13 @@ int check_flags(int argc, char** argv) {
   if (FLAGS_threads < 0) return fail(2, "--threads must be >= 0 (0: all cores)");
   if (FLAGS_part_size < -1) return fail(2, "--part_size must be >= 0 (0: one problem)");
   if (FLAGS_part_sweeps < 1) return fail(2, "--part_sweeps must be >= 1");
+  if (FLAGS_partitions != "auto") {
+    if (partitions_from_flag() < 1)
+      return fail(2, "--partitions must be auto, 1 or a number of parts K >= 2, not '" +
+                         FLAGS_partitions + "'");
+    if (FLAGS_part_size >= 0)
+      return fail(2, "--partitions=" + FLAGS_partitions + " and --part_size: give one of them");
+  }
   if (FLAGS_part_rings < 0) return fail(2, "--part_rings must be >= 0");
   if (!(FLAGS_power >= 1 || FLAGS_power == 0)) return fail(2, "--power must be >= 1 (or 0)");
   if (!(FLAGS_feature_angle > 0 && FLAGS_feature_angle < 180))
@@ -333,6 +351,7 @@ int options_from_flags(RecipeOptions* o, bool* composed) {
   s.function_tolerance = FLAGS_function_tolerance;
   s.threads = FLAGS_threads;
   if (FLAGS_part_size >= 0) s.part_size = FLAGS_part_size;
+  if (FLAGS_partitions != "auto") s.partitions = partitions_from_flag();
   s.max_sweeps = FLAGS_part_sweeps;
   s.sweep_rings = FLAGS_part_rings;
   s.verbose = FLAGS_verbose;

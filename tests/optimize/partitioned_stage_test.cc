@@ -160,5 +160,24 @@ TEST(PartitionedStage, OnlyShapeStagesOfLargeEnoughMeshes) {
   EXPECT_FALSE(use_partitions(mesh, spec));
 }
 
+TEST(PartitionedStage, PartsByCount) {
+  const Mesh mesh = grid(CellType::kTet4, 4);  // 384 tets
+  StageSpec spec;
+  spec.solver.part_size = 100000;  // the default: far too few elements
+  EXPECT_EQ(stage_num_parts(mesh, spec), 1);
+  spec.solver.partitions = 3;  // a count overrides the size
+  EXPECT_EQ(stage_num_parts(mesh, spec), 3);
+  spec.solver.partitions = 1;
+  EXPECT_EQ(stage_num_parts(mesh, spec), 1);
+  spec.solver.partitions = 100;  // at least 64 elements per part: 384 / 64 = 6
+  EXPECT_EQ(stage_num_parts(mesh, spec), 6);
+  spec.solver.partitions = 0;
+  spec.solver.part_size = 100;
+  EXPECT_EQ(stage_num_parts(mesh, spec), 4);  // ceil(384 / 100)
+  spec.solver.partitions = 3;
+  spec.untangle = true;
+  EXPECT_EQ(stage_num_parts(mesh, spec), 1);
+}
+
 }  // namespace
 }  // namespace tmop

@@ -60,7 +60,9 @@ TEST_F(TmopOptimizeTool, UsageErrorsExitWithTwoAndOneLine) {
   for (const std::string& bad :
        {std::string("--bogus=1"), std::string("--metric=nope"), std::string("--max_iterations=-3"),
         std::string("--recipe=nope"), std::string("--feature_angle=0"), std::string("--power=0.5"),
-        std::string("--boundary=sticky"), std::string("--guarantee=maybe")}) {
+        std::string("--boundary=sticky"), std::string("--guarantee=maybe"),
+        std::string("--partitions=0"), std::string("--partitions=two"),
+        std::string("--partitions=4 --part_size=100"), std::string("--part_rings=-1")}) {
     std::string err;
     EXPECT_EQ(run(io + bad, &err), 2) << bad << ": " << err;
     EXPECT_EQ(lines(err), 1) << bad << ": " << err;

@@ -14,10 +14,23 @@
 
 namespace tmop {
 
+int stage_num_parts(const Mesh& mesh, const StageSpec& spec) {
+  const SolverOptions& so = spec.solver;
+  if (spec.untangle || mesh.space_dim != mesh.dim()) return 1;
+  const std::int64_t elements = mesh.num_elements();
+  // At least kMinPartElements elements per part: smaller parts only add cut work.
+  constexpr std::int64_t kMinPartElements = 64;
+  std::int64_t parts = 1;
+  if (so.partitions > 0)
+    parts = so.partitions;
+  else if (so.part_size > 0 && elements >= 2 * static_cast<std::int64_t>(so.part_size))
+    parts = (elements + so.part_size - 1) / so.part_size;
+  parts = std::min(parts, elements / kMinPartElements);
+  return static_cast<int>(std::max<std::int64_t>(1, parts));
+}
+
 bool use_partitions(const Mesh& mesh, const StageSpec& spec) {
-  const int part_size = spec.solver.part_size;
-  if (part_size <= 0 || spec.untangle || mesh.space_dim != mesh.dim()) return false;
-  return mesh.num_elements() >= 2 * static_cast<std::int64_t>(part_size);
+  return stage_num_parts(mesh, spec) >= 2;
 }
 
 namespace {
@@ -183,8 +196,7 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
   std::vector<int> weight(mesh->num_cells(), 0);
   for (int c = 0; c < mesh->num_cells(); ++c)
     weight[c] = static_cast<int>(cp.offset[c + 1] - cp.offset[c]);
-  const int num_parts = static_cast<int>(
-      (static_cast<std::int64_t>(ctx.num_elements) + so.part_size - 1) / so.part_size);
+  const int num_parts = stage_num_parts(*mesh, spec);
   PartitionOptions popts;
   popts.num_parts = num_parts;
   popts.cell_weight = &weight;

@@ -27,7 +27,10 @@
 
 namespace tmop {
 
-// Whether optimize_stage solves `spec` on `mesh` in parts.
+// How many parts optimize_stage solves `spec` on `mesh` in (SolverOptions::partitions, else
+// part_size); 1 means one problem (untangling, surface meshes, or too small a mesh).
+int stage_num_parts(const Mesh& mesh, const StageSpec& spec);
+// Whether optimize_stage solves `spec` on `mesh` in parts: stage_num_parts >= 2.
 bool use_partitions(const Mesh& mesh, const StageSpec& spec);
 
 // Solves the stage in parts, in place (mesh in the stage's frame). Marks in_problem, fills the

@@ -156,6 +156,9 @@ struct SolverOptions {
   // elements and more are partitioned) is measured in docs/partitioning.md: less time and
   // memory than one problem from 300k tets up, more time below.
   int part_size = 100000;
+  // Parts by count instead (at least 64 elements each): 0 uses part_size; 1 one problem; K >= 2
+  // K parts whatever the mesh's size.
+  int partitions = 0;
   int max_sweeps = 4;
   double sweep_tolerance = 5e-3;
   // Sweeps after the first re-solve, in each phase, only the free vertices within sweep_rings
