@@ -37,7 +37,9 @@ struct RecipeResult {
 //  "layer_cells", "held_vertices" (recipes sliver, shape: boundary layer; null otherwise),
 //  "guard_held_cells" (the guarantee guard: cells held in its last round; null without guard),
 //  "stages": [{"name", "linear_solver", "elements", "sample_points", "free_vertices",
-//   "initial_objective", "final_objective", "iterations", "termination", "seconds",
+//   "initial_objective", "final_objective", "iterations", "solves", "parts" (0: one problem),
+//   "sweeps", "element_iterations" (elements x LM iterations, summed over the parts),
+//   "termination", "seconds",
 //   "inverted_before", "inverted_after", "min_quality_before", "min_quality_after",
 //   "history": [{"iteration", "objective", "solver_objective", "min_quality", "inverted",
 //                "seconds"}]}]}  (IterationRecord: objective, min_quality and inverted are null
