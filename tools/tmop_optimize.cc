@@ -220,7 +220,8 @@ QualityReport print_quality(const char* label, const Mesh& mesh, bool keep_per_c
 // --partitions as a count: 1 or K >= 2; 0 when it is not a whole number in [1, 2^31).
 int partitions_from_flag() {
   const std::string& f = FLAGS_partitions;
-  if (f.empty() || f.size() > 10 || f.find_first_not_of("0123456789") != std::string::npos) return 0;
+  if (f.empty() || f.size() > 10 || f.find_first_not_of("0123456789") != std::string::npos)
+    return 0;
   const long long k = std::stoll(f);
   return k >= 1 && k <= 2147483647LL ? static_cast<int>(k) : 0;
 }

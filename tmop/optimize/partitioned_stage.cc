@@ -307,11 +307,12 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
       result->history.push_back(rec);
       if (so.verbose)
         std::fprintf(stderr,
-                     "  [%s] sweep %d %s: %4d parts, %7d vertices, %d-%d iterations  objective %.6e  (solver "
+                     "  [%s] sweep %d %s: %4d parts, %7d vertices, %d-%d iterations  objective "
+                     "%.6e  (solver "
                      "%.6e)  min quality %.4f  inverted %d  %.2f s\n",
-                     spec.name.c_str(), sweep, names[ph], totals.parts, totals.vertices, totals.min_iterations,
-                     totals.max_iterations, rec.objective, rec.solver_objective, rec.min_quality,
-                     rec.inverted, rec.seconds);
+                     spec.name.c_str(), sweep, names[ph], totals.parts, totals.vertices,
+                     totals.min_iterations, totals.max_iterations, rec.objective,
+                     rec.solver_objective, rec.min_quality, rec.inverted, rec.seconds);
       if (so.progress) {
         ProgressRecord pr;
         static_cast<IterationRecord&>(pr) = rec;

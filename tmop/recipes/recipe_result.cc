@@ -81,10 +81,8 @@ std::string recipe_json(const RecipeResult& r) {
          ", \"initial_objective\": " + json_number(st.initial_objective) +
          ", \"final_objective\": " + json_number(st.final_objective) +
          ", \"iterations\": " + std::to_string(st.iterations) +
-         ", \"solves\": " + std::to_string(st.solves) +
-         ", \"parts\": " + std::to_string(st.parts) +
-         ", \"sweeps\": " + std::to_string(st.sweeps) +
-         ", \"element_iterations\": " +
+         ", \"solves\": " + std::to_string(st.solves) + ", \"parts\": " + std::to_string(st.parts) +
+         ", \"sweeps\": " + std::to_string(st.sweeps) + ", \"element_iterations\": " +
          std::to_string(st.parts ? st.part_element_iterations
                                  : static_cast<std::int64_t>(st.num_elements) * st.iterations) +
          ", \"termination\": " + json_string(st.termination) +
