@@ -118,5 +118,31 @@ TEST(HighOrderSurface, TiltedTri6GridIsCertifiedInItsPlane) {
   EXPECT_EQ(compute_quality(mesh).certified_cells, 2 * n * n);
 }
 
+// Two tri6 cells whose only free node is the mid node of their shared edge. Cell 0 is inverted at
+// its corner 0 by its boundary mid node (0.1, 0): the corner's Jacobian does not depend on the
+// free mid node (its shape function's gradient is zero there), so no move can repair it. The
+// stage must say so before any solve, not after its eps rounds, and leave the mesh as it was.
+TEST(HighOrderUntangle, CornerInvertedOnlyByFixedNodesIsRefusedAtOnce) {
+  Mesh mesh;
+  const double xy[9][2] = {{0, 0},     {1, 0},   {0, 1},   {1, 1},  {0.1, 0},
+                           {0.5, 0.5}, {0, 0.5}, {1, 0.5}, {0.5, 1}};
+  for (const auto& p : xy) {
+    const double x[3] = {p[0], p[1], 0};
+    mesh.add_vertex(x);
+  }
+  const std::int32_t a[6] = {0, 1, 2, 4, 5, 6}, b[6] = {1, 3, 2, 7, 8, 5};
+  mesh.add_cell(CellType::kTri6, a);
+  mesh.add_cell(CellType::kTri6, b);
+  const std::vector<double> input = mesh.coords;
+  UntangleOptions opt;
+  RecipeResult result;
+  const Status st = untangle(&mesh, opt, &result);
+  ASSERT_FALSE(st.ok());
+  EXPECT_NE(st.message().find("cannot untangle: 1 cells inverted with every node"),
+            std::string::npos)
+      << st.message();
+  EXPECT_EQ(mesh.coords, input);
+}
+
 }  // namespace
 }  // namespace tmop

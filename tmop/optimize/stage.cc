@@ -234,6 +234,8 @@ Status solve_whole(Mesh* mesh, StageContext& ctx, const IdealTable& table,
           best_det = det_min;
           best_round = round + 1;
           best_coords = mesh->coords;
+        } else if (spec.untangle_patience > 0 && round + 1 - best_round >= spec.untangle_patience) {
+          break;
         }
         const double energy = summary.final_cost;
         const double sigma = std::max(1 - energy / summary.initial_cost, spec.untangle_sigma_min);
@@ -370,18 +372,30 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
   if (spec.untangle && !untangle_metric)
     return fail("an untangling stage needs an UntangleMetric as its first term");
   if (spec.untangle) {
-    // An inverted point whose nodes are all fixed cannot be repaired by moving nodes.
+    // T at a sample point depends only on the nodes whose G_i there is not zero (a quadratic
+    // cell's corner point does not see the mid nodes of the edges away from that corner). An
+    // inverted point whose such nodes are all fixed cannot be repaired by moving nodes.
     std::vector<int> stuck;
     for (std::size_t p = 0; p < P; ++p) {
       const int c = ctx.point_cell[p];
       if (!stuck.empty() && stuck.back() == c) continue;
+      const int n = mesh->cell_size(c);
+      const double* G = ctx.G[0].at(p);
+      double g_max = 0;
+      for (int k = 0; k < n * d; ++k) g_max = std::max(g_max, std::abs(G[k]));
       bool all_fixed = true;
-      for (int i = 0; i < mesh->cell_size(c); ++i) all_fixed &= ctx.fixed[mesh->cell(c)[i]] != 0;
+      for (int i = 0; i < n && all_fixed; ++i) {
+        bool seen = false;
+        for (int b = 0; b < d; ++b) seen |= std::abs(G[i * d + b]) > 1e-12 * g_max;
+        all_fixed = !seen || ctx.fixed[mesh->cell(c)[i]] != 0;
+      }
       if (!all_fixed) continue;
       double T[9];
-      compute_T(mesh->cell_size(c), d, *mesh, mesh->cell(c), ctx.G[0].at(p), T, ctx.frames.cell(c));
+      compute_T(n, d, *mesh, mesh->cell(c), G, T, ctx.frames.cell(c));
       if (!(det_d(T, d) > 0)) stuck.push_back(c);
     }
+    std::sort(stuck.begin(), stuck.end());  // a cell's points need not be contiguous
+    stuck.erase(std::unique(stuck.begin(), stuck.end()), stuck.end());
     // Only the default fixed boundary can be released: sliding keeps corners and feature
     // curves, and a caller's own flags are its choice.
     if (!stuck.empty())

@@ -93,6 +93,10 @@ struct StageSpec {
   bool untangle = false;
   int untangle_max_rounds = 60;
   int untangle_round_iterations = 40;
+  // The schedule also stops after this many rounds in a row that do not improve on the best state
+  // (fewer inverted cells, or as many with a larger min det); 0: no such stop. Around cells that
+  // cannot be repaired, later rounds only drag neighbours over (t5 at -order 2 with pushed cells).
+  int untangle_patience = 8;
   // Lower bound of sigma, the fraction by which eps's target mu = (1 - sigma) chi(min det, eps)
   // undercuts the current regularised minimum. The published schedule uses 0.1 with solves run
   // to convergence; with short rounds the energy barely moves in a round, sigma sits at its

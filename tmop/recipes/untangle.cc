@@ -165,6 +165,7 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
     if (geometry) geometry->apply(&stage);
     stage.untangle_max_rounds = options.max_rounds;
     stage.untangle_round_iterations = options.round_iterations;
+    stage.untangle_patience = options.patience;
     stage.untangle_sigma_min = options.sigma_min;
     TermSpec term;
     try {
