@@ -1,9 +1,12 @@
 // tmop_optimize over the recipe registry: unused options refused (exit 2, one line),
 // --fixed_nodes (file or field) keeps nodes bit for bit and locates bad files, the report
-// carries settings, version and the input's hash, and --from_report reproduces a run.
+// carries settings, version and the size and hash of every file it reads, and --from_report
+// reproduces a run.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -21,6 +24,18 @@ namespace {
 std::string slurp(const std::string& path) {
   std::ifstream f(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+// The report's entry of one read file: {"flag", "path", "bytes", "fnv1a64"}, the hash computed
+// here independently of the tool (FNV-1a 64 of the file's bytes).
+std::string input_file_entry(const std::string& flag, const std::string& path) {
+  const std::string bytes = slurp(path);
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return "{\"flag\": \"" + flag + "\", \"path\": \"" + path +
+         "\", \"bytes\": " + std::to_string(bytes.size()) + ", \"fnv1a64\": \"" + hex + "\"}";
 }
 
 class RegistryTool : public ::testing::Test {
@@ -176,6 +191,33 @@ TEST_F(RegistryTool, ARunReproducedFromItsReportIsByteIdentical) {
   { std::ofstream(dir_ + "/other.json") << "{\"x\": 1}"; }
   EXPECT_EQ(run("--from_report=" + dir_ + "/other.json --output=" + dir_ + "/d.msh", &err), 2);
   EXPECT_EQ(err, dir_ + "/other.json: not a tmop_optimize report (no \"flags\" object)\n");
+}
+
+// "input_files" lists every file the run reads with its size and hash: the input, a
+// --fixed_nodes FILE and the --from_report; a changed file changes its hash.
+TEST_F(RegistryTool, TheReportHashesEveryFileTheRunReads) {
+  const std::string nodes = dir_ + "/fixed.txt", report = dir_ + "/r.json";
+  std::string err, hashes[2];
+  for (int pass = 0; pass < 2; ++pass) {
+    { std::ofstream(nodes) << (pass == 0 ? "3 4\n# held\n5\n" : "3 4\n# held\n6\n"); }
+    ASSERT_EQ(run(io() + "--fixed_nodes=" + nodes + " --report=" + report, &err), 0) << err;
+    const std::string json = slurp(report), entry = input_file_entry("fixed_nodes", nodes);
+    EXPECT_NE(json.find("\"input_files\": [\n    " + input_file_entry("input", in_) + ",\n    " +
+                        entry + "\n  ]"),
+              std::string::npos)
+        << entry << "\n"
+        << json.substr(0, 1200);
+    hashes[pass] = entry;
+  }
+  EXPECT_NE(hashes[0], hashes[1]);  // same size, one byte changed
+  // A rerun lists the report it read, and the files its flags name.
+  const std::string rerun = dir_ + "/r2.json";
+  ASSERT_EQ(run("--from_report=" + report + " --output=" + dir_ + "/b.msh --report=" + rerun, &err),
+            0)
+      << err;
+  const std::string json = slurp(rerun);
+  EXPECT_NE(json.find(input_file_entry("fixed_nodes", nodes)), std::string::npos) << json;
+  EXPECT_NE(json.find(input_file_entry("from_report", report)), std::string::npos) << json;
 }
 
 }  // namespace

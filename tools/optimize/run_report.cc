@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "tmop/quality/quality_json.h"
@@ -30,6 +31,42 @@ std::string flags_json() {
     out += std::string(out.empty() ? "" : ",") + "\n    " + tmop::json_string(f.name) + ": " +
            tmop::json_string(f.current_value);
   return "{" + out + "\n  }";
+}
+
+// The files the run reads, (flag, path), in flag order: --input, --reference, --moved,
+// --fixed_nodes unless field:NAME, --geometry unless empty or analytic (geometry_source.h's rule:
+// sphere:, plane:, cylinder:) and --from_report. --size_field names a point-data array, no file.
+std::vector<std::pair<std::string, std::string>> read_files(const std::string& input) {
+  std::vector<std::pair<std::string, std::string>> out = {{"input", input}};
+  for (const char* flag : {"reference", "moved", "fixed_nodes", "geometry", "from_report"}) {
+    std::string v;
+    if (!gflags::GetCommandLineOption(flag, &v) || v.empty()) continue;
+    const std::string name = v.substr(0, v.find(':'));
+    const std::string f = flag;
+    if (f == "fixed_nodes" && v.compare(0, 6, "field:") == 0) continue;
+    if (f == "geometry" && v.find(':') != std::string::npos &&
+        (name == "sphere" || name == "plane" || name == "cylinder"))
+      continue;
+    out.emplace_back(f, v);
+  }
+  return out;
+}
+
+// "\"bytes\": N, \"fnv1a64\": \"HEX\"" of a file; both null when it cannot be read.
+std::string size_and_hash_json(const std::string& path) {
+  std::uint64_t hash = 0, bytes = 0;
+  if (!fnv1a64_file(path, &hash, &bytes).ok()) return "\"bytes\": null, \"fnv1a64\": null";
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  return "\"bytes\": " + std::to_string(bytes) + ", \"fnv1a64\": " + tmop::json_string(hex);
+}
+
+std::string input_files_json(const std::string& input) {
+  std::string out;
+  for (const auto& f : read_files(input))
+    out += std::string(out.empty() ? "" : ",") + "\n    {\"flag\": " + tmop::json_string(f.first) +
+           ", \"path\": " + tmop::json_string(f.second) + ", " + size_and_hash_json(f.second) + "}";
+  return "[" + out + "\n  ]";
 }
 
 // A minimal reader of the one object apply_report_flags needs: {"name": "value", ...} with
@@ -111,18 +148,14 @@ std::string run_report(const ReportInputs& in, const tmop::RecipeResult& result,
     for (char c : text) out += c == '\n' ? std::string("\n  ") : std::string(1, c);
     return out;
   };
-  std::uint64_t hash = 0, bytes = 0;
-  const bool hashed = fnv1a64_file(in.input, &hash, &bytes).ok();
-  char hex[17];
-  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
   return "{\n  \"input\": " + tmop::json_string(in.input) +
          ",\n  \"output\": " + (in.written ? tmop::json_string(in.output) : "null") +
          ",\n  \"status\": " + tmop::json_string(in.status) +
          ",\n  \"tmop\": {\"version\": " + tmop::json_string(TMOP_VERSION) +
          ", \"commit\": " + tmop::json_string(TMOP_GIT_COMMIT) + "}" +
-         ",\n  \"input_file\": {\"path\": " + tmop::json_string(in.input) +
-         ", \"bytes\": " + (hashed ? std::to_string(bytes) : "null") +
-         ", \"fnv1a64\": " + (hashed ? tmop::json_string(hex) : "null") + "}" +
+         ",\n  \"input_file\": {\"path\": " + tmop::json_string(in.input) + ", " +
+         size_and_hash_json(in.input) + "}" +
+         ",\n  \"input_files\": " + input_files_json(in.input) +
          ",\n  \"settings\": " + in.settings_json + ",\n  \"flags\": " + flags_json() +
          ",\n  \"run\": " + tmop::recipe_json(result) +
          ",\n  \"quality_before\": " + indent(tmop::quality_json(before)) +

@@ -2,7 +2,10 @@
 // tmop_optimize's run report (--report=FILE.json) and its rerun (--from_report=FILE.json):
 //
 //   run_report: {"input", "output", "status", "tmop": {"version", "commit"},
-//     "input_file": {"path", "bytes", "fnv1a64"}, "settings": (recipe_settings_json: the options
+//     "input_file": {"path", "bytes", "fnv1a64"} (the input mesh), "input_files": [{"flag",
+//     "path", "bytes", "fnv1a64"}: every file the run reads, in this order: input, reference,
+//     moved, fixed_nodes (not field:NAME), geometry (a surface file), from_report; bytes and
+//     fnv1a64 null for a file that cannot be read], "settings": (recipe_settings_json: the options
 //     as the recipe used them, defaults resolved), "flags": {every tmop_optimize flag: its value
 //     as text, defaults included}, "run": (recipe_json), "quality_before", "quality_after"}.
 //   apply_report_flags: sets every flag of the report's "flags" that the command line did not
