@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "tmop/element/shape.h"
 #include "tmop/io/mesh_io.h"
 #include "tmop/io/node_order.h"
 
@@ -43,6 +44,25 @@ Mesh make_mesh(const std::vector<CellType>& types, int space_dim) {
     const int region = 10 + static_cast<int>(t);
     const int entity = 100 + static_cast<int>(t);
     m.add_cell(t, nodes, region, entity);
+  }
+  return m;
+}
+
+Mesh straight_cells_mesh(const std::vector<CellType>& types) {
+  Mesh m;
+  m.space_dim = 3;
+  const double A[3][3] = {{2.0, 0.25, 0.5}, {0.125, 1.5, 0.375}, {0.25, 0.5, 3.0}};
+  for (std::size_t c = 0; c < types.size(); ++c) {
+    const CellType t = types[c];
+    std::int32_t nodes[kMaxCellNodes];
+    for (int i = 0; i < cell_num_nodes(t); ++i) {
+      const double* r = reference_node(t, i);
+      double x[3];
+      for (int j = 0; j < 3; ++j)
+        x[j] = 10.0 * static_cast<double>(c) + A[j][0] * r[0] + A[j][1] * r[1] + A[j][2] * r[2];
+      nodes[i] = m.add_vertex(x);
+    }
+    m.add_cell(t, nodes, 1 + static_cast<int>(c), 0);  // one region per cell: one block each
   }
   return m;
 }

@@ -16,6 +16,10 @@ namespace test {
 // A 3D mesh holding one or more cells of each listed type, with distinct non-round coordinates,
 // regions and entities (each (dim, entity) pair has a single region, as Gmsh requires).
 Mesh make_mesh(const std::vector<CellType>& types, int space_dim = 3);
+// One straight-sided cell of each listed type: its reference nodes under a fixed affine map
+// (a skew, non-orthogonal one), every node its own vertex, so each mid-edge node is exactly the
+// midpoint of its edge's corners. Cell c has region c + 1, entity 0.
+Mesh straight_cells_mesh(const std::vector<CellType>& types);
 // Every type tmop knows, 3D.
 std::vector<CellType> all_types();
 

@@ -59,12 +59,14 @@ struct CgType {
   CellType type;
 };
 const CgType kTypes[] = {
-    {CGNS_ENUMV(NODE), CellType::kVertex},    {CGNS_ENUMV(BAR_2), CellType::kLine2},
-    {CGNS_ENUMV(BAR_3), CellType::kLine3},    {CGNS_ENUMV(TRI_3), CellType::kTri3},
-    {CGNS_ENUMV(TRI_6), CellType::kTri6},     {CGNS_ENUMV(QUAD_4), CellType::kQuad4},
-    {CGNS_ENUMV(QUAD_9), CellType::kQuad9},   {CGNS_ENUMV(TETRA_4), CellType::kTet4},
-    {CGNS_ENUMV(TETRA_10), CellType::kTet10}, {CGNS_ENUMV(PYRA_5), CellType::kPyramid5},
-    {CGNS_ENUMV(PENTA_6), CellType::kWedge6}, {CGNS_ENUMV(HEXA_8), CellType::kHex8},
+    {CGNS_ENUMV(NODE), CellType::kVertex},      {CGNS_ENUMV(BAR_2), CellType::kLine2},
+    {CGNS_ENUMV(BAR_3), CellType::kLine3},      {CGNS_ENUMV(TRI_3), CellType::kTri3},
+    {CGNS_ENUMV(TRI_6), CellType::kTri6},       {CGNS_ENUMV(QUAD_4), CellType::kQuad4},
+    {CGNS_ENUMV(QUAD_9), CellType::kQuad9},     {CGNS_ENUMV(TETRA_4), CellType::kTet4},
+    {CGNS_ENUMV(TETRA_10), CellType::kTet10},   {CGNS_ENUMV(PYRA_5), CellType::kPyramid5},
+    {CGNS_ENUMV(PENTA_6), CellType::kWedge6},   {CGNS_ENUMV(HEXA_8), CellType::kHex8},
+    {CGNS_ENUMV(QUAD_8), CellType::kQuad8},     {CGNS_ENUMV(HEXA_20), CellType::kHex20},
+    {CGNS_ENUMV(PENTA_15), CellType::kWedge15},
 };
 
 bool from_cgns(int cg, CellType* t) {
@@ -78,8 +80,8 @@ bool to_cgns(CellType t, CGNS_ENUMT(ElementType_t) * cg) {
   return false;
 }
 
-// CGNS node i = Gmsh node perm(i); identity except tet10 (a swap: its own inverse).
-int cg_index(CellType t, int i) { return t == CellType::kTet10 ? gmsh_index_of_vtk_node(t)[i] : i; }
+// The CGNS position of Gmsh node i (PATRAN's order, node_order.h).
+int cg_index(CellType t, int i) { return patran_index_of_gmsh_node(t, i); }
 
 struct CgFile {
   int fn = -1;

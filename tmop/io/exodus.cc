@@ -62,10 +62,11 @@ struct ExoType {
   CellType type;
 };
 const ExoType kTypes[] = {
-    {"BAR2", CellType::kLine2},   {"BEAM3", CellType::kLine3},   {"TRI3", CellType::kTri3},
-    {"TRI6", CellType::kTri6},    {"QUAD4", CellType::kQuad4},   {"QUAD9", CellType::kQuad9},
-    {"TETRA", CellType::kTet4},   {"TETRA10", CellType::kTet10}, {"PYRAMID", CellType::kPyramid5},
-    {"WEDGE", CellType::kWedge6}, {"HEX8", CellType::kHex8},
+    {"BAR2", CellType::kLine2},   {"BEAM3", CellType::kLine3},     {"TRI3", CellType::kTri3},
+    {"TRI6", CellType::kTri6},    {"QUAD4", CellType::kQuad4},     {"QUAD9", CellType::kQuad9},
+    {"TETRA", CellType::kTet4},   {"TETRA10", CellType::kTet10},   {"PYRAMID", CellType::kPyramid5},
+    {"WEDGE", CellType::kWedge6}, {"HEX8", CellType::kHex8},       {"QUAD8", CellType::kQuad8},
+    {"HEX20", CellType::kHex20},  {"WEDGE15", CellType::kWedge15},
 };
 // Other names for the same types, accepted on read.
 const ExoType kAliases[] = {
@@ -79,6 +80,11 @@ const ExoType kAliases[] = {
     {"TET4", CellType::kTet4},         {"TET10", CellType::kTet10},
     {"PYRAMID5", CellType::kPyramid5}, {"PYRA5", CellType::kPyramid5},
     {"WEDGE6", CellType::kWedge6},     {"HEX", CellType::kHex8},
+    {"SHELL8", CellType::kQuad8},      {"QUAD", CellType::kQuad8},
+    {"HEX", CellType::kHex20},         {"WEDGE", CellType::kWedge15},
+    {"TETRA", CellType::kTet10},       {"TET", CellType::kTet10},
+    {"TRI", CellType::kTri6},          {"TRIANGLE", CellType::kTri6},
+    {"QUAD", CellType::kQuad9},        {"SHELL", CellType::kQuad9},
 };
 
 bool exo_type(const std::string& name, int nodes, CellType* t) {
@@ -99,11 +105,8 @@ const char* exo_name(CellType t) {
   return nullptr;
 }
 
-// Gmsh node i = Exodus node perm[i]; identity except tet10 (VTK's order).
-int exo_index(CellType t, int i) {
-  if (t == CellType::kTet10) return gmsh_index_of_vtk_node(t)[i];  // a swap: its own inverse
-  return i;
-}
+// The Exodus position of Gmsh node i (PATRAN's order, node_order.h).
+int exo_index(CellType t, int i) { return patran_index_of_gmsh_node(t, i); }
 
 // Closes the file on every path out of the reader and writer.
 struct ExoFile {

@@ -71,6 +71,62 @@ const int* gmsh_index_of_vtk_node(CellType type) {
   }
 }
 
+namespace {
+
+// The PATRAN edge orders of the types whose order differs from Gmsh's (node_order.h).
+struct PatranEdges {
+  CellType type;
+  int num_edges;
+  int edges[12][2];
+};
+const PatranEdges kPatranEdges[] = {
+    {CellType::kTet10, 6, {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}},
+    {CellType::kHex20,
+     12,
+     {{0, 1},
+      {1, 2},
+      {2, 3},
+      {3, 0},
+      {0, 4},
+      {1, 5},
+      {2, 6},
+      {3, 7},
+      {4, 5},
+      {5, 6},
+      {6, 7},
+      {7, 4}}},
+    {CellType::kWedge15,
+     9,
+     {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 4}, {2, 5}, {3, 4}, {4, 5}, {5, 3}}},
+};
+
+// perm[type][gmsh node] = PATRAN position, derived from the cell table's edges so the two cannot
+// disagree.
+struct PatranPermutations {
+  int perm[kNumCellTypes][kMaxCellNodes];
+  PatranPermutations() {
+    for (int t = 0; t < kNumCellTypes; ++t)
+      for (int i = 0; i < kMaxCellNodes; ++i) perm[t][i] = i;
+    for (const PatranEdges& p : kPatranEdges) {
+      const CellInfo& info = cell_info(p.type);
+      for (int e = 0; e < info.num_edges; ++e) {
+        const int a = info.edges[e][0], b = info.edges[e][1];
+        for (int k = 0; k < p.num_edges; ++k)
+          if ((p.edges[k][0] == a && p.edges[k][1] == b) ||
+              (p.edges[k][0] == b && p.edges[k][1] == a))
+            perm[static_cast<int>(p.type)][info.num_corners + e] = info.num_corners + k;
+      }
+    }
+  }
+};
+
+}  // namespace
+
+int patran_index_of_gmsh_node(CellType type, int i) {
+  static const PatranPermutations p;
+  return p.perm[static_cast<int>(type)][i];
+}
+
 std::string unsupported_vtk_type_note(std::int64_t vtk_type) {
   const char* name = nullptr;
   switch (vtk_type) {

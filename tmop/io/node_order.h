@@ -31,6 +31,15 @@ bool cell_type_from_vtk(int vtk_type, CellType* type);
 // gmsh[p[i]] = vtk[i]; writing: vtk[i] = gmsh[p[i]].
 const int* gmsh_index_of_vtk_node(CellType type);
 
+// Exodus II and CGNS share one node order (PATRAN's): Gmsh's corners, then one node per edge in
+// their own edge order, then face / centre nodes (only quad9's centre here, which matches).
+//   tet10:   edges 0-1 1-2 2-0 0-3 1-3 2-3 (Gmsh's 3-2, 3-1 swapped);
+//   hex20:   bottom 0-1 1-2 2-3 3-0, vertical 0-4 1-5 2-6 3-7, top 4-5 5-6 6-7 7-4;
+//   wedge15: bottom 0-1 1-2 2-0, vertical 0-3 1-4 2-5, top 3-4 4-5 5-3;
+//   tri6, quad8, quad9 and the linear types: Gmsh's order.
+// The Exodus / CGNS position of Gmsh node i of a cell of `type`.
+int patran_index_of_gmsh_node(CellType type, int i);
+
 // The tail of the message refusing VTK cell type `vtk_type`: its VTK name where the refused
 // type is a common one (polygon, polyhedron, pixel, voxel, quadratic pyramid, arbitrary-order
 // Lagrange / Bezier cells) and the list of types tmop reads, e.g.
