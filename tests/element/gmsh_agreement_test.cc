@@ -17,7 +17,7 @@ namespace tmop {
 namespace {
 
 struct GmshRecord {
-  std::string kind;  // "ref" or "elem"
+  std::string kind;  // "ref", "elem" or "basis"
   int gmsh_type;
   int num_nodes;
   std::vector<double> xyz;  // num_nodes x 3
@@ -39,7 +39,8 @@ std::vector<GmshRecord> RunGmshDump() {
     std::istringstream in(line);
     GmshRecord r;
     in >> r.kind >> r.gmsh_type >> r.num_nodes;
-    r.xyz.resize(3 * r.num_nodes);
+    // "basis": the point, then the value of each node's function there.
+    r.xyz.resize(r.kind == "basis" ? 3 + r.num_nodes : 3 * r.num_nodes);
     for (double& x : r.xyz) in >> x;
     if (in) out.push_back(r);
   }
@@ -119,8 +120,28 @@ TEST(GmshAgreement, MeshNodesFollowTheTable) {
     ++checked[info.name];
   }
   for (const char* name : {"tri6", "quad9", "tet10", "hex27", "wedge6", "tet4", "hex8", "pyramid5",
-                           "quad8", "hex20", "wedge15", "wedge18"})
+                           "quad8", "hex20", "wedge15", "wedge18", "pyramid13", "pyramid14"})
     EXPECT_GT(checked[name], 0) << "gmsh produced no " << name;
+}
+
+// The pyramids' bases are rational and easy to get subtly wrong: their values must be gmsh's own
+// (gmsh.model.mesh.getBasisFunctions) at interior points.
+TEST(GmshAgreement, PyramidBasesEqualGmsh) {
+  if (Records().empty()) GTEST_SKIP() << "gmsh Python module not available";
+  std::map<std::string, int> checked;
+  for (const GmshRecord& r : Records()) {
+    if (r.kind != "basis") continue;
+    CellType t;
+    ASSERT_TRUE(cell_type_from_gmsh(r.gmsh_type, &t));
+    ASSERT_EQ(r.num_nodes, cell_num_nodes(t));
+    double N[kMaxCellNodes];
+    shape_values(t, r.xyz.data(), N);
+    for (int i = 0; i < r.num_nodes; ++i)
+      EXPECT_NEAR(N[i], r.xyz[3 + i], 1e-12) << cell_name(t) << " node " << i;
+    ++checked[cell_name(t)];
+  }
+  for (const char* name : {"pyramid5", "pyramid13", "pyramid14"})
+    EXPECT_GT(checked[name], 0) << name;
 }
 
 }  // namespace

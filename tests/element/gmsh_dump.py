@@ -22,7 +22,7 @@ def dump_elements(limit=6):
     types, _, nodes = gmsh.model.mesh.getElements()
     for t, ns in zip(types, nodes):
         _, _, _, nn, _, _ = gmsh.model.mesh.getElementProperties(t)
-        if t not in (9, 10, 11, 12, 6, 7, 5, 3, 4, 2, 13, 16, 17, 18):
+        if t not in (9, 10, 11, 12, 6, 7, 5, 3, 4, 2, 13, 16, 17, 18, 19, 14):
             continue
         for e in range(min(limit, len(ns) // nn)):
             xs = []
@@ -33,7 +33,7 @@ def dump_elements(limit=6):
 
 gmsh.initialize()
 gmsh.option.setNumber("General.Terminal", 0)
-for t in [15, 1, 8, 2, 3, 4, 5, 6, 7, 9, 10, 11, 12, 16, 17, 18, 13]:
+for t in [15, 1, 8, 2, 3, 4, 5, 6, 7, 9, 10, 11, 12, 16, 17, 18, 13, 19, 14]:
     _, dim, _, nn, c, _ = gmsh.model.mesh.getElementProperties(t)
     print("ref", t, nn, " ".join(repr(float(x)) for x in pad(c, dim)))
 
@@ -121,5 +121,25 @@ gmsh.model.mesh.setTransfiniteVolume(hex_box)
 gmsh.model.mesh.setRecombine(3, hex_box)
 gmsh.model.mesh.generate(3)
 dump_elements()
+# The same pyramids at order 2: complete (pyramid14) and incomplete (pyramid13).
+for incomplete in (0, 1):
+    gmsh.option.setNumber("Mesh.SecondOrderIncomplete", incomplete)
+    gmsh.model.mesh.setOrder(2)
+    dump_elements()
+    gmsh.model.mesh.setOrder(1)
+gmsh.option.setNumber("Mesh.SecondOrderIncomplete", 0)
 gmsh.model.remove()
+# gmsh's own basis functions of the pyramids at a few interior points:
+#   basis TYPE NUM_NODES x y z N_0 .. N_{n-1}
+for t in (7, 19, 14):
+    _, _, _, nn, _, _ = gmsh.model.mesh.getElementProperties(t)
+    pts = []
+    for k in range(12):
+        z = 0.07 * k
+        pts += [(0.83 * ((k * 7) % 11) / 10.0 - 0.4) * (1 - z),
+                (0.61 * ((k * 5) % 13) / 12.0 - 0.3) * (1 - z), z]
+    _, values, _ = gmsh.model.mesh.getBasisFunctions(t, pts, "Lagrange")
+    for k in range(12):
+        print("basis", t, nn, " ".join(repr(float(v)) for v in
+                                      pts[3 * k:3 * k + 3] + list(values[nn * k:nn * (k + 1)])))
 gmsh.finalize()

@@ -11,10 +11,11 @@ namespace tmop {
 namespace {
 
 constexpr CellType kAllTypes[] = {
-    CellType::kVertex,  CellType::kLine2,  CellType::kLine3,  CellType::kTri3,     CellType::kQuad4,
-    CellType::kTet4,    CellType::kHex8,   CellType::kWedge6, CellType::kPyramid5, CellType::kTri6,
-    CellType::kQuad9,   CellType::kTet10,  CellType::kHex27,  CellType::kQuad8,    CellType::kHex20,
-    CellType::kWedge15, CellType::kWedge18};
+    CellType::kVertex,   CellType::kLine2,     CellType::kLine3,    CellType::kTri3,
+    CellType::kQuad4,    CellType::kTet4,      CellType::kHex8,     CellType::kWedge6,
+    CellType::kPyramid5, CellType::kTri6,      CellType::kQuad9,    CellType::kTet10,
+    CellType::kHex27,    CellType::kQuad8,     CellType::kHex20,    CellType::kWedge15,
+    CellType::kWedge18,  CellType::kPyramid13, CellType::kPyramid14};
 constexpr SampleRule kAllRules[] = {SampleRule::kDefault, SampleRule::kCorners, SampleRule::kNodes,
                                     SampleRule::kCentroid, SampleRule::kGauss};
 
@@ -75,9 +76,12 @@ TEST(SamplePoints, DefaultRulesFollowTheDesign) {
   EXPECT_EQ(sample_points(CellType::kHex20, SampleRule::kDefault).size(), 20u);
   EXPECT_EQ(sample_points(CellType::kWedge15, SampleRule::kDefault).size(), 15u);
   EXPECT_EQ(sample_points(CellType::kWedge18, SampleRule::kDefault).size(), 18u);
-  // The pyramid's apex (z = 1) is never sampled.
-  for (SampleRule r : kAllRules)
-    for (const SamplePoint& p : sample_points(CellType::kPyramid5, r)) EXPECT_LT(p.xi[2], 0.99);
+  EXPECT_EQ(sample_points(CellType::kPyramid13, SampleRule::kDefault).size(), 12u);
+  EXPECT_EQ(sample_points(CellType::kPyramid14, SampleRule::kDefault).size(), 13u);
+  // A pyramid's apex (z = 1) is never sampled.
+  for (CellType t : {CellType::kPyramid5, CellType::kPyramid13, CellType::kPyramid14})
+    for (SampleRule r : kAllRules)
+      for (const SamplePoint& p : sample_points(t, r)) EXPECT_LT(p.xi[2], 0.99) << cell_name(t);
 }
 
 // Exact integrals over the reference elements divided by their volumes (independent closed

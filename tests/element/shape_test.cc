@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -14,10 +15,11 @@ namespace tmop {
 namespace {
 
 constexpr CellType kAllTypes[] = {
-    CellType::kVertex,  CellType::kLine2,  CellType::kLine3,  CellType::kTri3,     CellType::kQuad4,
-    CellType::kTet4,    CellType::kHex8,   CellType::kWedge6, CellType::kPyramid5, CellType::kTri6,
-    CellType::kQuad9,   CellType::kTet10,  CellType::kHex27,  CellType::kQuad8,    CellType::kHex20,
-    CellType::kWedge15, CellType::kWedge18};
+    CellType::kVertex,   CellType::kLine2,     CellType::kLine3,    CellType::kTri3,
+    CellType::kQuad4,    CellType::kTet4,      CellType::kHex8,     CellType::kWedge6,
+    CellType::kPyramid5, CellType::kTri6,      CellType::kQuad9,    CellType::kTet10,
+    CellType::kHex27,    CellType::kQuad8,     CellType::kHex20,    CellType::kWedge15,
+    CellType::kWedge18,  CellType::kPyramid13, CellType::kPyramid14};
 
 // A random point strictly inside the reference element (Gmsh's, see shape.h).
 void RandomInterior(CellType type, std::mt19937* rng, double* xi) {
@@ -141,9 +143,9 @@ TEST(Shape, ReproducesLinearFields) {
 // Quadratic types must also reproduce quadratic fields (that is what the mid nodes are for).
 TEST(Shape, QuadraticTypesReproduceQuadraticFields) {
   std::mt19937 rng(5);
-  for (CellType t :
-       {CellType::kLine3, CellType::kTri6, CellType::kQuad9, CellType::kTet10, CellType::kHex27,
-        CellType::kQuad8, CellType::kHex20, CellType::kWedge15, CellType::kWedge18}) {
+  for (CellType t : {CellType::kLine3, CellType::kTri6, CellType::kQuad9, CellType::kTet10,
+                     CellType::kHex27, CellType::kQuad8, CellType::kHex20, CellType::kWedge15,
+                     CellType::kWedge18, CellType::kPyramid13, CellType::kPyramid14}) {
     const int n = cell_num_nodes(t);
     auto f = [](const double* x) {
       return 0.3 + x[0] - 0.5 * x[1] * x[1] + 2 * x[0] * x[2] - x[1] * x[2] + 0.25 * x[0] * x[0];
@@ -279,7 +281,7 @@ TEST(CellTypeTable, FacetsPointOutOfTheReferenceElement) {
 }
 
 // Mid-edge nodes of quadratic types sit at the middle of the table's edges, in table order;
-// face nodes (hex27, wedge18) at the centre of their facets (cell_info's facet_nodes).
+// face nodes (hex27, wedge18, pyramid14) at the centre of their facets (cell_info's facet_nodes).
 TEST(CellTypeTable, MidNodesFollowEdgeAndFacetOrder) {
   for (CellType t : kAllTypes) {
     const CellInfo& info = cell_info(t);
@@ -305,9 +307,46 @@ TEST(CellTypeTable, MidNodesFollowEdgeAndFacetOrder) {
         EXPECT_EQ(m[j], c) << cell_name(t) << " face " << f;
       }
     }
-    const int expected_faces = t == CellType::kHex27 ? 6 : (t == CellType::kWedge18 ? 3 : 0);
+    const int expected_faces = t == CellType::kHex27       ? 6
+                               : t == CellType::kWedge18   ? 3
+                               : t == CellType::kPyramid14 ? 1
+                                                           : 0;
     EXPECT_EQ(face_nodes, expected_faces) << cell_name(t);
   }
+}
+
+// The quadratic pyramids' spaces are rational (shape_families.h): both hold xi eta / s and
+// xi^2 eta / s (s = 1 - zeta), only pyramid14 holds xi^2 eta^2 / s^2, and a pyramid13 function
+// reproduces it at its nodes only.
+TEST(Shape, PyramidsReproduceTheirRationalSpaces) {
+  // The rational terms' limit at the apex (s = 0) is 0.
+  auto over = [](double num, const double* x, int power) {
+    const double s = 1 - x[2];
+    return s < 1e-14 ? 0.0 : num / std::pow(s, power);
+  };
+  auto f1 = [&](const double* x) { return over(x[0] * x[1], x, 1); };
+  auto f2 = [&](const double* x) { return over(x[0] * x[0] * x[1], x, 1) + x[2] * x[2]; };
+  auto f3 = [&](const double* x) { return over(x[0] * x[0] * x[1] * x[1], x, 2); };
+  auto at = [](CellType t, const double* xi, const std::function<double(const double*)>& f) {
+    double N[kMaxCellNodes];
+    shape_values(t, xi, N);
+    double v = 0;
+    for (int i = 0; i < cell_num_nodes(t); ++i) v += f(reference_node(t, i)) * N[i];
+    return v;
+  };
+  std::mt19937 rng(29);
+  double worst13 = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    double xi[3];
+    RandomInterior(CellType::kPyramid14, &rng, xi);
+    for (CellType t : {CellType::kPyramid13, CellType::kPyramid14}) {
+      EXPECT_NEAR(at(t, xi, f1), f1(xi), 1e-12) << cell_name(t);
+      EXPECT_NEAR(at(t, xi, f2), f2(xi), 1e-12) << cell_name(t);
+    }
+    EXPECT_NEAR(at(CellType::kPyramid14, xi, f3), f3(xi), 1e-12);
+    worst13 = std::max(worst13, std::abs(at(CellType::kPyramid13, xi, f3) - f3(xi)));
+  }
+  EXPECT_GT(worst13, 1e-3);
 }
 
 }  // namespace

@@ -35,8 +35,9 @@ TEST(Cgns, RoundTripsBlocksAsRegions) {
 // cells to be the midpoint of the edge the format documents place there. Then tmop reads the
 // same cells back.
 TEST(Cgns, QuadraticCellsFollowTheDocumentedNodeOrder) {
-  const std::vector<CellType> types = {CellType::kTri6,  CellType::kQuad8, CellType::kQuad9,
-                                       CellType::kTet10, CellType::kHex20, CellType::kWedge15};
+  const std::vector<CellType> types = {
+      CellType::kTri6,  CellType::kQuad8,   CellType::kQuad9,     CellType::kTet10,
+      CellType::kHex20, CellType::kWedge15, CellType::kPyramid13, CellType::kPyramid14};
   const Mesh mesh = test::straight_cells_mesh(types);
   EXPECT_EQ(test::round_trip(mesh, {"r.cgns"}), "");
   if (!test::have_python_module("h5py")) GTEST_SKIP() << "python3 h5py not installed";
@@ -46,7 +47,8 @@ TEST(Cgns, QuadraticCellsFollowTheDocumentedNodeOrder) {
   const std::string cmd = std::string(kPy) + " " + TMOP_SOURCE_DIR +
                           "/tests/io/patran_order_check.py cgns '" + dir + "/q.cgns'";
   ASSERT_EQ(test::run(cmd, &out), 0) << out;
-  for (const char* name : {"tri6", "quad8", "quad9", "tet10", "hex20", "wedge15"})
+  for (const char* name :
+       {"tri6", "quad8", "quad9", "tet10", "hex20", "wedge15", "pyramid13", "pyramid14"})
     EXPECT_NE(out.find(std::string("checked ") + name + " 1"), std::string::npos) << name << out;
 }
 

@@ -225,8 +225,9 @@ TEST(TmopWrites, GmshReadsMsh) {
 TEST(TmopWrites, MeshioReadsEveryFormat) {
   SKIP_UNLESS(test::have_python_module("meshio"), "python3-meshio");
   const std::string dir = test::temp_dir();
-  std::vector<CellType> types = test::all_types();
-  const Mesh mesh = test::make_mesh(types);
+  // meshio reads pyramid14 only from .msh; VTK has no 14-node pyramid.
+  const Mesh msh_mesh = test::make_mesh(test::all_types());
+  const Mesh mesh = test::make_mesh(test::vtk_types());
   const Mesh medit_mesh =
       test::make_mesh({CellType::kLine2, CellType::kTri3, CellType::kQuad4, CellType::kTet4,
                        CellType::kPyramid5, CellType::kWedge6, CellType::kHex8});
@@ -246,10 +247,12 @@ TEST(TmopWrites, MeshioReadsEveryFormat) {
     o.binary = j.bin;
     if (j.version) o.msh_version = j.version;
     const bool medit = std::string(j.name).find(".mesh") != std::string::npos;
-    const Status s = write_mesh(path, medit ? medit_mesh : mesh, o);
+    const bool msh = std::string(j.name).find(".msh") != std::string::npos;
+    const Mesh& m = medit ? medit_mesh : (msh ? msh_mesh : mesh);
+    const Status s = write_mesh(path, m, o);
     ASSERT_TRUE(s.ok()) << s.message();
     files.push_back(path);
-    dumps.push_back(test::dump_of(medit ? medit_mesh : mesh));
+    dumps.push_back(test::dump_of(m));
   }
   compare_with_reader("meshio", files, dumps);
 }

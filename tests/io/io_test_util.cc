@@ -23,6 +23,13 @@ std::vector<CellType> all_types() {
   return t;
 }
 
+std::vector<CellType> vtk_types() {
+  std::vector<CellType> t;
+  for (CellType c : all_types())
+    if (io::vtk_cell_type(c) >= 0) t.push_back(c);
+  return t;
+}
+
 Mesh make_mesh(const std::vector<CellType>& types, int space_dim) {
   Mesh m;
   m.space_dim = space_dim;

@@ -22,6 +22,8 @@ Mesh make_mesh(const std::vector<CellType>& types, int space_dim = 3);
 Mesh straight_cells_mesh(const std::vector<CellType>& types);
 // Every type tmop knows, 3D.
 std::vector<CellType> all_types();
+// Every type that has a VTK cell type (all but pyramid14), for .vtk / .vtu.
+std::vector<CellType> vtk_types();
 
 // Empty string when equal, otherwise the first difference. Compares space_dim, coordinates
 // bit-exactly (or within tol), types, nodes, regions and (if compare_entity) entities.

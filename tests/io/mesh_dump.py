@@ -33,12 +33,14 @@ import sys
 
 GMSH_TYPES = {15: "vertex", 1: "line2", 8: "line3", 2: "tri3", 3: "quad4", 4: "tet4",
               5: "hex8", 6: "wedge6", 7: "pyramid5", 9: "tri6", 10: "quad9", 11: "tet10",
-              12: "hex27", 16: "quad8", 17: "hex20", 18: "wedge15", 13: "wedge18"}
+              12: "hex27", 16: "quad8", 17: "hex20", 18: "wedge15", 13: "wedge18",
+              19: "pyramid13", 14: "pyramid14"}
 MESHIO_TYPES = {"vertex": "vertex", "line": "line2", "line3": "line3", "triangle": "tri3",
                 "quad": "quad4", "tetra": "tet4", "hexahedron": "hex8", "wedge": "wedge6",
                 "pyramid": "pyramid5", "triangle6": "tri6", "quad9": "quad9",
                 "tetra10": "tet10", "hexahedron27": "hex27", "quad8": "quad8",
-                "hexahedron20": "hex20", "wedge15": "wedge15", "wedge18": "wedge18"}
+                "hexahedron20": "hex20", "wedge15": "wedge15", "wedge18": "wedge18",
+                "pyramid13": "pyramid13", "pyramid14": "pyramid14"}
 # meshio keeps wedge15 / wedge18 from a .msh file in its own orders (its gmsh permutation for
 # wedge15, none for wedge18) but from VTK files in VTK's: the dump normalises both to VTK's, so
 # "order meshio" means VTK's order for every type but wedge6. Index k of a row = the meshio
@@ -100,9 +102,10 @@ def meshio_cells(mesh, from_msh=False):
 
 def dump_meshio(path):
     import meshio
-    # meshio 5.0 reads and writes wedge15 but its topological_dimension table lacks the name
-    # (KeyError on every file holding one); the entry is all that is missing.
-    meshio._mesh.topological_dimension.setdefault("wedge15", 3)
+    # meshio 5.0 reads and writes wedge15, pyramid13 and pyramid14 but its topological_dimension
+    # table lacks the names (KeyError on every file holding one); the entry is all that is missing.
+    for name in ("wedge15", "pyramid13", "pyramid14"):
+        meshio._mesh.topological_dimension.setdefault(name, 3)
     mesh = meshio.read(path)
     emit("vtk" if path.endswith(".su2") else "meshio", mesh.points,
          meshio_cells(mesh, path.endswith(".msh")), path + ".meshio.dump")

@@ -29,9 +29,11 @@ const CellFacet kPyramidFacets[] = {
     {4, {0, 3, 2, 1}}, {3, {0, 1, 4}}, {3, {1, 2, 4}}, {3, {2, 3, 4}}, {3, {3, 0, 4}}};
 
 // Face nodes: hex27's follow the facet order (20..25); wedge18's sit on the three quad faces in
-// Gmsh's order (0-1-4-3, 0-2-5-3, 1-2-5-4).
+// Gmsh's order (0-1-4-3, 0-2-5-3, 1-2-5-4); pyramid14's on its base.
 const int kHex27FaceNodes[] = {20, 21, 22, 23, 24, 25};
 const int kWedge18FaceNodes[] = {-1, -1, 15, 17, 16};
+// pyramid14's base centre (facet 0, the quad).
+const int kPyramid14FaceNodes[] = {13, -1, -1, -1, -1};
 
 #define TMOP_N(a) static_cast<int>(sizeof(a) / sizeof(a[0])), a
 const CellInfo kTable[kNumCellTypes] = {
@@ -57,6 +59,10 @@ const CellInfo kTable[kNumCellTypes] = {
      nullptr},
     {"wedge18", 3, 18, 6, 2, CellType::kWedge6, 13, TMOP_N(kWedgeEdges), TMOP_N(kWedgeFacets),
      kWedge18FaceNodes},
+    {"pyramid13", 3, 13, 5, 2, CellType::kPyramid5, 19, TMOP_N(kPyramidEdges),
+     TMOP_N(kPyramidFacets), nullptr},
+    {"pyramid14", 3, 14, 5, 2, CellType::kPyramid5, 14, TMOP_N(kPyramidEdges),
+     TMOP_N(kPyramidFacets), kPyramid14FaceNodes},
 };
 #undef TMOP_N
 

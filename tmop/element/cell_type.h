@@ -31,12 +31,14 @@ enum class CellType : std::uint8_t {
   kQuad9,
   kTet10,
   kHex27,
-  kQuad8,    // serendipity quad (Gmsh 16, VTK_QUADRATIC_QUAD)
-  kHex20,    // serendipity hex (Gmsh 17, VTK_QUADRATIC_HEXAHEDRON)
-  kWedge15,  // serendipity wedge (Gmsh 18, VTK_QUADRATIC_WEDGE)
-  kWedge18,  // Lagrange wedge tri6 x line3 (Gmsh 13, VTK_BIQUADRATIC_QUADRATIC_WEDGE)
+  kQuad8,      // serendipity quad (Gmsh 16, VTK_QUADRATIC_QUAD)
+  kHex20,      // serendipity hex (Gmsh 17, VTK_QUADRATIC_HEXAHEDRON)
+  kWedge15,    // serendipity wedge (Gmsh 18, VTK_QUADRATIC_WEDGE)
+  kWedge18,    // Lagrange wedge tri6 x line3 (Gmsh 13, VTK_BIQUADRATIC_QUADRATIC_WEDGE)
+  kPyramid13,  // serendipity pyramid: corners and mid-edge nodes (Gmsh 19, VTK_QUADRATIC_PYRAMID)
+  kPyramid14,  // Lagrange pyramid: pyramid13 and the base centre (Gmsh 14; no VTK type)
 };
-constexpr int kNumCellTypes = 17;
+constexpr int kNumCellTypes = 19;
 constexpr int kMaxCellNodes = 27;
 
 struct CellFacet {
@@ -57,7 +59,8 @@ struct CellInfo {
   int num_facets;
   const CellFacet* facets;
   // Local node index of the node at the centre of each facet (num_facets entries, -1 where the
-  // facet has none), or nullptr when the type has no face nodes (hex27, wedge18 have them).
+  // facet has none), or nullptr when the type has no face nodes (hex27, wedge18, pyramid14 have
+  // them).
   const int* facet_nodes;
 };
 

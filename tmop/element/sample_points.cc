@@ -17,9 +17,11 @@ void SetEqualWeights(Rule* r) {
   for (SamplePoint& p : *r) p.weight = 1.0 / static_cast<double>(r->size());
 }
 
-Rule NodeRule(CellType type, int first, int count) {
+// Nodes first .. first + count - 1 but `skip` (-1: none).
+Rule NodeRule(CellType type, int first, int count, int skip = -1) {
   Rule r;
   for (int i = first; i < first + count; ++i) {
+    if (i == skip) continue;
     const double* x = reference_node(type, i);
     r.push_back({{x[0], x[1], x[2]}, 0});
   }
@@ -103,12 +105,13 @@ Rule GaussRule(CellType type) {
 
 Rule MakeRule(CellType type, SampleRule rule) {
   const CellInfo& info = cell_info(type);
+  const bool pyramid = info.linear == CellType::kPyramid5;
   switch (rule) {
     case SampleRule::kCorners:
-      // The pyramid's apex is a degenerate point of its map (the gradients are singular there).
-      return NodeRule(type, 0, type == CellType::kPyramid5 ? 4 : info.num_corners);
+      // A pyramid's apex is a degenerate point of its map (the gradients are singular there).
+      return NodeRule(type, 0, info.num_corners, pyramid ? 4 : -1);
     case SampleRule::kNodes:
-      return NodeRule(type, 0, type == CellType::kPyramid5 ? 4 : info.num_nodes);
+      return NodeRule(type, 0, info.num_nodes, pyramid ? 4 : -1);
     case SampleRule::kCentroid:
       return CentroidRule(type);
     case SampleRule::kGauss:

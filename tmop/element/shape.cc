@@ -43,12 +43,20 @@ constexpr double kWedge18Nodes[][3] = {
     {0.5, 0, -1}, {0, 0.5, -1}, {0, 0, 0},     {0.5, 0.5, -1}, {1, 0, 0},   {0, 1, 0},
     {0.5, 0, 1},  {0, 0.5, 1},  {0.5, 0.5, 1}, {0.5, 0, 0},    {0, 0.5, 0}, {0.5, 0.5, 0}};
 constexpr const double (*kWedge15Nodes)[3] = kWedge18Nodes;
+// pyramid13: corners, then the mid-edge nodes in the cell table's edge order; pyramid14 adds the
+// base centre.
+constexpr double kPyramid14Nodes[][3] = {
+    {-1, -1, 0}, {1, -1, 0},      {1, 1, 0},         {-1, 1, 0}, {0, 0, 1},
+    {0, -1, 0},  {-1, 0, 0},      {-0.5, -0.5, 0.5}, {1, 0, 0},  {0.5, -0.5, 0.5},
+    {0, 1, 0},   {0.5, 0.5, 0.5}, {-0.5, 0.5, 0.5},  {0, 0, 0}};
+constexpr const double (*kPyramid13Nodes)[3] = kPyramid14Nodes;
 
 // Indexed by static_cast<int>(CellType); the order of the enum.
 constexpr const double (*kNodes[kNumCellTypes])[3] = {
-    kVertexNodes, kLine2Nodes,  kLine3Nodes,    kTri3Nodes,    kQuad4Nodes,  kTet4Nodes,
-    kHex8Nodes,   kWedge6Nodes, kPyramid5Nodes, kTri6Nodes,    kQuad9Nodes,  kTet10Nodes,
-    kHex27Nodes,  kQuad8Nodes,  kHex20Nodes,    kWedge15Nodes, kWedge18Nodes};
+    kVertexNodes,  kLine2Nodes,   kLine3Nodes,     kTri3Nodes,     kQuad4Nodes,
+    kTet4Nodes,    kHex8Nodes,    kWedge6Nodes,    kPyramid5Nodes, kTri6Nodes,
+    kQuad9Nodes,   kTet10Nodes,   kHex27Nodes,     kQuad8Nodes,    kHex20Nodes,
+    kWedge15Nodes, kWedge18Nodes, kPyramid13Nodes, kPyramid14Nodes};
 
 // Tensor-product types: the 1D factor of node i along axis j is picked by the node's reference
 // coordinate (-1 -> 0, +1 -> 1, 0 -> 2, the line3 node order). Derived from the node table at
@@ -235,6 +243,12 @@ void Evaluate(CellType type, const double* xi, double* N, double* dN) {
       return;
     case CellType::kWedge18:
       internal::wedge18(xi, N, dN);
+      return;
+    case CellType::kPyramid13:
+      internal::quadratic_pyramid(false, xi, N, dN);
+      return;
+    case CellType::kPyramid14:
+      internal::quadratic_pyramid(true, xi, N, dN);
       return;
   }
 }

@@ -59,14 +59,15 @@ struct CgType {
   CellType type;
 };
 const CgType kTypes[] = {
-    {CGNS_ENUMV(NODE), CellType::kVertex},      {CGNS_ENUMV(BAR_2), CellType::kLine2},
-    {CGNS_ENUMV(BAR_3), CellType::kLine3},      {CGNS_ENUMV(TRI_3), CellType::kTri3},
-    {CGNS_ENUMV(TRI_6), CellType::kTri6},       {CGNS_ENUMV(QUAD_4), CellType::kQuad4},
-    {CGNS_ENUMV(QUAD_9), CellType::kQuad9},     {CGNS_ENUMV(TETRA_4), CellType::kTet4},
-    {CGNS_ENUMV(TETRA_10), CellType::kTet10},   {CGNS_ENUMV(PYRA_5), CellType::kPyramid5},
-    {CGNS_ENUMV(PENTA_6), CellType::kWedge6},   {CGNS_ENUMV(HEXA_8), CellType::kHex8},
-    {CGNS_ENUMV(QUAD_8), CellType::kQuad8},     {CGNS_ENUMV(HEXA_20), CellType::kHex20},
-    {CGNS_ENUMV(PENTA_15), CellType::kWedge15},
+    {CGNS_ENUMV(NODE), CellType::kVertex},       {CGNS_ENUMV(BAR_2), CellType::kLine2},
+    {CGNS_ENUMV(BAR_3), CellType::kLine3},       {CGNS_ENUMV(TRI_3), CellType::kTri3},
+    {CGNS_ENUMV(TRI_6), CellType::kTri6},        {CGNS_ENUMV(QUAD_4), CellType::kQuad4},
+    {CGNS_ENUMV(QUAD_9), CellType::kQuad9},      {CGNS_ENUMV(TETRA_4), CellType::kTet4},
+    {CGNS_ENUMV(TETRA_10), CellType::kTet10},    {CGNS_ENUMV(PYRA_5), CellType::kPyramid5},
+    {CGNS_ENUMV(PENTA_6), CellType::kWedge6},    {CGNS_ENUMV(HEXA_8), CellType::kHex8},
+    {CGNS_ENUMV(QUAD_8), CellType::kQuad8},      {CGNS_ENUMV(HEXA_20), CellType::kHex20},
+    {CGNS_ENUMV(PENTA_15), CellType::kWedge15},  {CGNS_ENUMV(PYRA_13), CellType::kPyramid13},
+    {CGNS_ENUMV(PYRA_14), CellType::kPyramid14},
 };
 
 bool from_cgns(int cg, CellType* t) {

@@ -62,11 +62,14 @@ struct ExoType {
   CellType type;
 };
 const ExoType kTypes[] = {
-    {"BAR2", CellType::kLine2},   {"BEAM3", CellType::kLine3},     {"TRI3", CellType::kTri3},
-    {"TRI6", CellType::kTri6},    {"QUAD4", CellType::kQuad4},     {"QUAD9", CellType::kQuad9},
-    {"TETRA", CellType::kTet4},   {"TETRA10", CellType::kTet10},   {"PYRAMID", CellType::kPyramid5},
-    {"WEDGE", CellType::kWedge6}, {"HEX8", CellType::kHex8},       {"QUAD8", CellType::kQuad8},
-    {"HEX20", CellType::kHex20},  {"WEDGE15", CellType::kWedge15},
+    {"BAR2", CellType::kLine2},          {"BEAM3", CellType::kLine3},
+    {"TRI3", CellType::kTri3},           {"TRI6", CellType::kTri6},
+    {"QUAD4", CellType::kQuad4},         {"QUAD9", CellType::kQuad9},
+    {"TETRA", CellType::kTet4},          {"TETRA10", CellType::kTet10},
+    {"PYRAMID", CellType::kPyramid5},    {"WEDGE", CellType::kWedge6},
+    {"HEX8", CellType::kHex8},           {"QUAD8", CellType::kQuad8},
+    {"HEX20", CellType::kHex20},         {"WEDGE15", CellType::kWedge15},
+    {"PYRAMID13", CellType::kPyramid13}, {"PYRAMID14", CellType::kPyramid14},
 };
 // Other names for the same types, accepted on read.
 const ExoType kAliases[] = {
@@ -85,6 +88,8 @@ const ExoType kAliases[] = {
     {"TETRA", CellType::kTet10},       {"TET", CellType::kTet10},
     {"TRI", CellType::kTri6},          {"TRIANGLE", CellType::kTri6},
     {"QUAD", CellType::kQuad9},        {"SHELL", CellType::kQuad9},
+    {"PYRAMID", CellType::kPyramid13}, {"PYRAMID", CellType::kPyramid14},
+    {"PYRA13", CellType::kPyramid13},  {"PYRA14", CellType::kPyramid14},
 };
 
 bool exo_type(const std::string& name, int nodes, CellType* t) {

@@ -12,6 +12,7 @@
 
 #include "tmop/io/atomic_file.h"
 #include "tmop/io/formats.h"
+#include "tmop/io/node_order.h"
 #include "tmop/io/scanner.h"
 
 namespace tmop {
@@ -157,6 +158,7 @@ void check_writable_or_throw(const std::string& path, const Mesh& mesh,
     if (is_exodus_ext(ext)) io::check_exodus_writable(mesh);
     if (ext == "cgns") io::check_cgns_writable(mesh);
     if (ext == "vtk") io::check_vtk_writable(mesh);
+    if (ext == "vtu") io::check_vtk_cell_types(mesh, ".vtu");
     if (ext == "stl") io::check_stl_writable(mesh, options);
     if (is_openmesh_ext(ext)) io::check_openmesh_writable(ext, mesh);
   } catch (const Error& e) {

@@ -1,5 +1,9 @@
 #include "tmop/io/node_order.h"
 
+#include <string>
+
+#include "tmop/core/status.h"
+
 namespace tmop {
 namespace io {
 namespace {
@@ -15,6 +19,8 @@ const int* const kHex20 = kHex27;
 // VTK's wedges: the base triangle reversed (as wedge6), then edges bottom, top, vertical, then
 // (wedge18) the quad faces.
 const int kWedge15[15] = {0, 2, 1, 3, 5, 4, 7, 9, 6, 13, 14, 12, 8, 11, 10};
+// VTK's pyramid13: base edges in cycle order 0-1 1-2 2-3 3-0, then 0-4 1-4 2-4 3-4.
+const int kPyramid13[13] = {0, 1, 2, 3, 4, 5, 8, 10, 6, 7, 9, 11, 12};
 const int kWedge18[18] = {0, 2, 1, 3, 5, 4, 7, 9, 6, 13, 14, 12, 8, 11, 10, 16, 17, 15};
 
 // Indexed by CellType.
@@ -36,6 +42,8 @@ const int kVtkTypes[kNumCellTypes] = {
     25,  // hex20: VTK_QUADRATIC_HEXAHEDRON
     26,  // wedge15: VTK_QUADRATIC_WEDGE
     32,  // wedge18: VTK_BIQUADRATIC_QUADRATIC_WEDGE
+    27,  // pyramid13: VTK_QUADRATIC_PYRAMID
+    -1,  // pyramid14: none (VTK's quadratic pyramids have 13 or 19 nodes)
 };
 
 }  // namespace
@@ -66,6 +74,8 @@ const int* gmsh_index_of_vtk_node(CellType type) {
       return kWedge15;
     case CellType::kWedge18:
       return kWedge18;
+    case CellType::kPyramid13:
+      return kPyramid13;
     default:
       return kIdentity;
   }
@@ -98,6 +108,8 @@ const PatranEdges kPatranEdges[] = {
     {CellType::kWedge15,
      9,
      {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 4}, {2, 5}, {3, 4}, {4, 5}, {5, 3}}},
+    {CellType::kPyramid13, 8, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 4}, {2, 4}, {3, 4}}},
+    {CellType::kPyramid14, 8, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 4}, {2, 4}, {3, 4}}},
 };
 
 // perm[type][gmsh node] = PATRAN position, derived from the cell table's edges so the two cannot
@@ -127,6 +139,14 @@ int patran_index_of_gmsh_node(CellType type, int i) {
   return p.perm[static_cast<int>(type)][i];
 }
 
+void check_vtk_cell_types(const Mesh& mesh, const char* format) {
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    if (vtk_cell_type(mesh.cell_types[c]) < 0)
+      throw Error(std::string("cannot write ") + cell_name(mesh.cell_types[c]) + " cells to " +
+                  format + " (VTK has no such cell type; cell " + std::to_string(c) +
+                  " is the first)");
+}
+
 std::string unsupported_vtk_type_note(std::int64_t vtk_type) {
   const char* name = nullptr;
   switch (vtk_type) {
@@ -147,9 +167,6 @@ std::string unsupported_vtk_type_note(std::int64_t vtk_type) {
       break;
     case 11:
       name = "VTK_VOXEL";
-      break;
-    case 27:
-      name = "VTK_QUADRATIC_PYRAMID";
       break;
     case 42:
       name = "VTK_POLYHEDRON";

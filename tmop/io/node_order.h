@@ -19,11 +19,12 @@
 #include <string>
 
 #include "tmop/element/cell_type.h"
+#include "tmop/mesh/mesh.h"
 
 namespace tmop {
 namespace io {
 
-// VTK cell-type number of a tmop type.
+// VTK cell-type number of a tmop type; -1 for pyramid14, which VTK has no type for.
 int vtk_cell_type(CellType type);
 // tmop type of a VTK cell-type number; false when tmop does not support it.
 bool cell_type_from_vtk(int vtk_type, CellType* type);
@@ -36,9 +37,14 @@ const int* gmsh_index_of_vtk_node(CellType type);
 //   tet10:   edges 0-1 1-2 2-0 0-3 1-3 2-3 (Gmsh's 3-2, 3-1 swapped);
 //   hex20:   bottom 0-1 1-2 2-3 3-0, vertical 0-4 1-5 2-6 3-7, top 4-5 5-6 6-7 7-4;
 //   wedge15: bottom 0-1 1-2 2-0, vertical 0-3 1-4 2-5, top 3-4 4-5 5-3;
+//   pyramid13 / pyramid14: base 0-1 1-2 2-3 3-0, then 0-4 1-4 2-4 3-4 (pyramid14: then the base
+//            centre, as Gmsh);
 //   tri6, quad8, quad9 and the linear types: Gmsh's order.
 // The Exodus / CGNS position of Gmsh node i of a cell of `type`.
 int patran_index_of_gmsh_node(CellType type, int i);
+
+// Throws "cannot write TYPE cells to FORMAT (...)" when the mesh has a cell without a VTK type.
+void check_vtk_cell_types(const Mesh& mesh, const char* format);
 
 // The tail of the message refusing VTK cell type `vtk_type`: its VTK name where the refused
 // type is a common one (polygon, polyhedron, pixel, voxel, quadratic pyramid, arbitrary-order

@@ -157,6 +157,7 @@ class VtkWriter {
 }  // namespace
 
 void check_vtk_writable(const Mesh& mesh) {
+  check_vtk_cell_types(mesh, ".vtk");
   // "SCALARS  double 1" reads "double" as the name: an unnamed array has no legacy form.
   for (const auto* arrays : {&mesh.point_data, &mesh.cell_data})
     for (const DataArray& a : *arrays)

@@ -133,6 +133,7 @@ class VtuWriter {
 }  // namespace
 
 void write_vtu(const Mesh& mesh, const WriteOptions& options, std::string* out) {
+  check_vtk_cell_types(mesh, ".vtu");
   for (int c = 0; c < mesh.num_cells(); ++c)
     for (int k = 0; k < mesh.cell_size(c); ++k)
       if (mesh.cell(c)[k] < 0 || mesh.cell(c)[k] >= mesh.num_vertices())
