@@ -11,6 +11,7 @@
 #ifndef TMOP_IO_ATOMIC_FILE_H_
 #define TMOP_IO_ATOMIC_FILE_H_
 
+#include <atomic>
 #include <string>
 #include <string_view>
 
@@ -25,6 +26,19 @@ Status write_file_atomically(const std::string& path, std::string_view bytes);
 // temporary file, print "PROGRAM: interrupted by SIGINT; no partial output left" on stderr and
 // end the process with exit code 130. `program` is copied (at most 63 characters).
 void remove_temporaries_on_signal(const char* program);
+
+// Installs SIGINT and SIGTERM handlers for a long run that cancels cleanly: the first signal
+// only raises the returned flag (a lock-free atomic, async-signal-safe), to be passed as
+// RecipeOptions::cancel; the caller then stops, writes nothing and reports the signal
+// (cancel_signal()). A second signal while cancelling takes remove_temporaries_on_signal's
+// immediate path (temporaries removed, one line, exit 130).
+const std::atomic<bool>* cancel_on_signal(const char* program);
+// The signal that raised cancel_on_signal's flag (SIGINT or SIGTERM), 0 when none came.
+int cancel_signal();
+// Before writing outputs: from now on a signal takes the immediate path (the temporary file
+// being written is removed, nothing is renamed into place). Returns whether the flag was raised
+// before the switch: the caller then writes nothing.
+bool stop_cancelling_on_signal();
 
 class TempFile {
  public:
