@@ -3,7 +3,8 @@
 // output's directory, filled, then renamed over the output. OUT either holds the complete new
 // file or is untouched; on failure the temporary file is removed. While a temporary file exists
 // it is registered, so remove_temporaries_on_signal's handler can delete it when SIGINT or
-// SIGTERM ends the program mid-write: nothing partial is left anywhere.
+// SIGTERM ends the program mid-write: nothing partial is left anywhere. cancel_on_signal turns
+// the first signal into a cancel flag for a long run (tmop_optimize) instead.
 //
 //   write_file_atomically: the whole content at once (meshes, reports, SVG pictures).
 //   TempFile: for writers that need a path of their own (OpenMesh picks its format by the
