@@ -7,6 +7,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "tests/optimize/grid_meshes.h"
 #include "tmop/mesh/topology.h"
@@ -186,6 +187,39 @@ TEST(RecipeRegistry, EveryRecipeStopsAtTheCancelFlag) {
     EXPECT_LE(measure_mesh(m, SampleRule::kDefault).inverted, inverted_before) << recipe;
   }
   EXPECT_GE(recipes, 5);
+}
+
+// A partitioned shape stage: cancelled at its first record (the end of its first phase) no other
+// phase starts; cancelled from another thread mid-phase, the workers start no further part and
+// the run ends Cancelled, the mesh valid.
+TEST(RecipeRegistry, PartitionedStageStopsAtTheCancelFlag) {
+  const Mesh input = jittered_grid(60, 7);  // 7,200 triangles
+  for (bool from_thread : {false, true}) {
+    Mesh m = input;
+    RecipeOptions o;
+    o.solver.threads = 2;
+    o.solver.partitions = 16;
+    std::atomic<bool> cancel{false};
+    o.cancel = &cancel;
+    int calls = 0, after_cancel = 0;
+    o.solver.progress = [&](const ProgressRecord&) {
+      if (cancel.load()) ++after_cancel;
+      ++calls;
+      if (!from_thread) cancel.store(true);
+    };
+    std::thread raiser;
+    if (from_thread) raiser = std::thread([&] { cancel.store(true); });
+    RecipeResult r;
+    const Status s = run_recipe("shape", &m, o, &r);
+    if (raiser.joinable()) raiser.join();
+    EXPECT_TRUE(s.cancelled()) << s.message();
+    EXPECT_LE(calls, 1) << from_thread;
+    EXPECT_EQ(after_cancel, 0);
+    EXPECT_EQ(measure_mesh(m, SampleRule::kDefault).inverted, 0);
+    if (from_thread) continue;
+    ASSERT_FALSE(r.stages.empty());
+    EXPECT_GT(r.stages[0].parts, 1) << "the stage was not partitioned";
+  }
 }
 
 // Fixed nodes keep their exact bits in every recipe that moves interior nodes; the boundary
