@@ -510,17 +510,23 @@ int run(const RecipeOptions& o, Inputs* in) {
   const bool check_guarantee = recipe_guarantees(FLAGS_recipe, o, &guarantees);
   const int threads = FLAGS_threads;
   GuaranteeBaseline baseline;
+  // A signal during reading or the measures before the recipe: nothing more starts.
+  const auto signalled = [&o] { return o.cancel && o.cancel->load(); };
+  if (signalled()) return interrupted();
   if (check_guarantee) baseline = guarantee_baseline(mesh, threads);
+  if (signalled()) return interrupted();
   // --write_on_failure writes the better of the input and the recipe's result (fewer inverted
   // cells; the input on a tie).
   Mesh input_copy;
   if (FLAGS_write_on_failure) input_copy = mesh;
   const std::vector<double> input_coords = mesh.coords;
   QualityReport quality_before = print_quality("before:", mesh);
+  if (signalled()) return interrupted();
   quality_before.opposite_convention = in->flipped;  // as tmop_quality reports the input
   int inverted = 0;
   Status s = check_valid_input(FLAGS_recipe, mesh, o.rule, &inverted);
   if (!s.ok()) return fail(1, FLAGS_input + ": " + s.message());
+  if (signalled()) return interrupted();
   RecipeResult result;
   s = run_recipe(FLAGS_recipe, &mesh, o, &result);
   // A cancelled run (SIGINT / SIGTERM raised the cancel flag) writes nothing: one line, exit 130.
