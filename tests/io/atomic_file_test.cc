@@ -129,12 +129,14 @@ void expect_cancel_then_exit(int sig, bool stop_first) {
     if (stop_first) {
       if (stop_cancelling_on_signal()) ::_exit(4);  // no signal came yet
     } else {
-      ::raise(sig);
+      ::kill(::getpid(), sig);  // process-directed, as a user's signal: taken by the signal thread
+      for (int i = 0; i < 5000 && !cancel->load(); ++i) ::usleep(1000);
       if (!cancel->load() || cancel_signal() != sig) ::_exit(5);
       if (list_dir(dir).size() != 2) ::_exit(6);  // the temporary file is still there
     }
-    ::raise(sig);
-    ::_exit(3);  // not reached
+    ::kill(::getpid(), sig);
+    ::sleep(5);
+    ::_exit(3);  // not reached: the signal thread exits the process
   }
   int status = 0;
   ASSERT_EQ(waitpid(pid, &status, 0), pid);

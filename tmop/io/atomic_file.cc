@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <thread>
 
 namespace tmop {
 namespace {
@@ -70,10 +71,17 @@ extern "C" void on_signal(int sig) {
   ::_exit(130);
 }
 
-extern "C" void on_signal_cancel(int sig) {
-  if (g_immediate.load() || g_cancel.load()) on_signal(sig);
-  g_cancel_signal.store(sig);
-  g_cancel.store(true);
+// cancel_on_signal's thread: SIGINT and SIGTERM are blocked in every thread and taken here
+// synchronously by sigwait, so no library's own handler (METIS installs one for SIGTERM around
+// its calls and fails the call) ever sees them.
+void wait_for_signals(sigset_t set) {
+  for (;;) {
+    int sig = 0;
+    if (::sigwait(&set, &sig) != 0) continue;
+    if (g_immediate.load() || g_cancel.load()) on_signal(sig);
+    g_cancel_signal.store(sig);
+    g_cancel.store(true);
+  }
 }
 
 void install(void (*handler)(int)) {
@@ -101,7 +109,12 @@ void remove_temporaries_on_signal(const char* program) {
 const std::atomic<bool>* cancel_on_signal(const char* program) {
   std::snprintf(g_program, sizeof g_program, "%s", program);
   g_immediate.store(false);
-  install(on_signal_cancel);
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  ::pthread_sigmask(SIG_BLOCK, &set, nullptr);  // threads created later inherit the mask
+  std::thread(wait_for_signals, set).detach();
   return &g_cancel;
 }
 

@@ -28,8 +28,10 @@ Status write_file_atomically(const std::string& path, std::string_view bytes);
 // end the process with exit code 130. `program` is copied (at most 63 characters).
 void remove_temporaries_on_signal(const char* program);
 
-// Installs SIGINT and SIGTERM handlers for a long run that cancels cleanly: the first signal
-// only raises the returned flag (a lock-free atomic, async-signal-safe), to be passed as
+// For a long run that cancels cleanly; call it before any thread is started: blocks SIGINT and
+// SIGTERM (every later thread inherits the mask) and takes them in a thread of its own (sigwait,
+// so no other handler, e.g. METIS's, sees them). The first signal only raises the returned flag
+// (a lock-free atomic), to be passed as
 // RecipeOptions::cancel; the caller then stops, writes nothing and reports the signal
 // (cancel_signal()). A second signal while cancelling takes remove_temporaries_on_signal's
 // immediate path (temporaries removed, one line, exit 130).
