@@ -23,8 +23,10 @@
 #include <glog/logging.h>
 #include <sys/stat.h>
 
+#include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <mutex>
 #include <string>
 
 #include "tmop/io/atomic_file.h"
@@ -483,27 +485,53 @@ void print_notes(const RecipeResult& result, bool ok, bool unchanged) {
 }
 
 // The recipe on the inputs, the result checked, written and reported: the exit code.
+// The last iteration reported (the cancel message names it). Progress may come from the
+// workers of a partitioned stage: a mutex, never taken by the signal handler.
+std::mutex g_last_mutex;
+std::string g_last_stage;
+int g_last_iteration = -1;
+
+int interrupted() {
+  const int sig = tmop::cancel_signal();
+  std::string where = "before the first iteration";
+  {
+    std::lock_guard<std::mutex> lock(g_last_mutex);
+    if (g_last_iteration >= 0)
+      where = "after " + g_last_stage + " iteration " + std::to_string(g_last_iteration);
+  }
+  std::fprintf(stderr, "tmop_optimize: interrupted by %s %s; nothing written\n",
+               sig == SIGTERM ? "SIGTERM" : "SIGINT", where.c_str());
+  return 130;
+}
+
 int run(const RecipeOptions& o, Inputs* in) {
   Mesh& mesh = in->mesh;
   GuaranteeOptions guarantees;
   const bool check_guarantee = recipe_guarantees(FLAGS_recipe, o, &guarantees);
   const int threads = FLAGS_threads;
   GuaranteeBaseline baseline;
+  // A signal during reading or the measures before the recipe: nothing more starts.
+  const auto signalled = [&o] { return o.cancel && o.cancel->load(); };
+  if (signalled()) return interrupted();
   if (check_guarantee) baseline = guarantee_baseline(mesh, threads);
+  if (signalled()) return interrupted();
   // --write_on_failure writes the better of the input and the recipe's result (fewer inverted
   // cells; the input on a tie).
   Mesh input_copy;
   if (FLAGS_write_on_failure) input_copy = mesh;
   const std::vector<double> input_coords = mesh.coords;
   QualityReport quality_before = print_quality("before:", mesh);
+  if (signalled()) return interrupted();
   quality_before.opposite_convention = in->flipped;  // as tmop_quality reports the input
   int inverted = 0;
   Status s = check_valid_input(FLAGS_recipe, mesh, o.rule, &inverted);
   if (!s.ok()) return fail(1, FLAGS_input + ": " + s.message());
+  if (signalled()) return interrupted();
   RecipeResult result;
   s = run_recipe(FLAGS_recipe, &mesh, o, &result);
-  // A cancelled run ends as an interrupted one: nothing written, exit 130.
-  if (s.cancelled()) std::raise(SIGINT);
+  // A cancelled run (SIGINT / SIGTERM raised the cancel flag) writes nothing: one line, exit 130.
+  // From here on a signal takes the immediate path: a temporary file being written is removed.
+  if (tmop::stop_cancelling_on_signal() || s.cancelled()) return interrupted();
   print_stages(result);
   // The guarantees, checked on the result independently of the recipe's own guard.
   bool guarantee_broken = false;
@@ -599,8 +627,9 @@ int main(int argc, char** argv) {
     const tmop::Status s = tmop_tools::apply_report_flags(FLAGS_from_report);
     if (!s.ok()) return fail(2, s.message());
   }
-  // Ctrl-C or a SIGTERM mid-run: temporary files removed, one line on stderr, exit 130.
-  tmop::remove_temporaries_on_signal("tmop_optimize");
+  // Ctrl-C or a SIGTERM mid-run cancels the recipe (the next iteration stops it), nothing is
+  // written, one line on stderr, exit 130; a second signal exits at once (temporaries removed).
+  const std::atomic<bool>* cancel = tmop::cancel_on_signal("tmop_optimize");
   // Ceres reports through glog; the tool reports itself (one line on failure).
   FLAGS_minloglevel = FLAGS_verbose ? 1 : 3;
   google::InitGoogleLogging(argv[0]);
@@ -619,5 +648,17 @@ int main(int argc, char** argv) {
   if (const int rc = options_from_flags(&options, &composed)) return rc;
   Inputs in;
   if (const int rc = load_inputs(composed, &options, &in)) return rc;
+  options.cancel = cancel;
+  {
+    const tmop::ProgressCallback user = options.solver.progress;
+    options.solver.progress = [user](const tmop::ProgressRecord& r) {
+      {
+        std::lock_guard<std::mutex> lock(g_last_mutex);
+        g_last_stage = r.stage;
+        g_last_iteration = r.iteration;
+      }
+      return !user || user(r);
+    };
+  }
   return run(options, &in);
 }

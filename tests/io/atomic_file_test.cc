@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -109,6 +110,48 @@ void expect_signal_cleans_up(int sig, const char* line) {
 TEST(AtomicFile, SigintAndSigtermRemoveTemporariesAndExit130) {
   expect_signal_cleans_up(SIGINT, "child: interrupted by SIGINT; no partial output left\n");
   expect_signal_cleans_up(SIGTERM, "child: interrupted by SIGTERM; no partial output left\n");
+}
+
+// cancel_on_signal: the first signal only raises the flag (the process goes on, the temporary file
+// stays), a second one takes the immediate path; after stop_cancelling_on_signal the first one
+// does (an output being written is removed, nothing renamed into place).
+void expect_cancel_then_exit(int sig, bool stop_first) {
+  const std::string dir = test::temp_dir();
+  const std::string err = dir + "/stderr.txt";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const int fd = ::open(err.c_str(), O_CREAT | O_WRONLY | O_TRUNC, 0644);
+    ::dup2(fd, 2);
+    const std::atomic<bool>* cancel = cancel_on_signal("child");
+    TempFile t(dir + "/mesh.vtu", "");
+    t.write("<VTKFile half written");
+    if (stop_first) {
+      if (stop_cancelling_on_signal()) ::_exit(4);  // no signal came yet
+    } else {
+      ::kill(::getpid(), sig);  // process-directed, as a user's signal: taken by the signal thread
+      for (int i = 0; i < 5000 && !cancel->load(); ++i) ::usleep(1000);
+      if (!cancel->load() || cancel_signal() != sig) ::_exit(5);
+      if (list_dir(dir).size() != 2) ::_exit(6);  // the temporary file is still there
+    }
+    ::kill(::getpid(), sig);
+    ::sleep(5);
+    ::_exit(3);  // not reached: the signal thread exits the process
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_EQ(slurp(err), std::string("child: interrupted by ") +
+                            (sig == SIGINT ? "SIGINT" : "SIGTERM") + "; no partial output left\n");
+  EXPECT_EQ(list_dir(dir), (std::vector<std::string>{"stderr.txt"}));
+}
+
+TEST(AtomicFile, CancelOnSignalRaisesTheFlagThenASecondSignalExits) {
+  for (int sig : {SIGINT, SIGTERM}) {
+    expect_cancel_then_exit(sig, false);
+    expect_cancel_then_exit(sig, true);
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "tests/optimize/grid_meshes.h"
 #include "tmop/mesh/topology.h"
@@ -152,6 +153,73 @@ TEST(RecipeRegistry, ProgressCallbackCancels) {
   RecipeResult r;
   EXPECT_TRUE(run_recipe("shape", &m, o, &r).cancelled());
   EXPECT_EQ(m.coords, input.coords);
+}
+
+// Every recipe in the registry: the cancel flag raised from the progress callback at the first
+// record (as a signal handler raises it) stops the run there: Cancelled, no further record of any
+// stage or round, the mesh without an inverted cell (untangle: no more than its input's).
+TEST(RecipeRegistry, EveryRecipeStopsAtTheCancelFlag) {
+  std::string names = recipe_names() + ", ";
+  int recipes = 0;
+  for (std::size_t at; (at = names.find(", ")) != std::string::npos; names.erase(0, at + 2)) {
+    const std::string recipe = names.substr(0, at);
+    const bool untangle = recipe == "untangle";
+    const Mesh input = untangle ? tangled_grid(12) : jittered_grid(12, 3);
+    const int inverted_before = measure_mesh(input, SampleRule::kDefault).inverted;
+    Mesh m = input;
+    RecipeOptions o;
+    if (recipe != "laplace") o.solver.threads = 1;
+    std::atomic<bool> cancel{false};
+    o.cancel = &cancel;
+    int calls = 0, after_cancel = 0;
+    o.solver.progress = [&](const ProgressRecord&) {
+      if (cancel.load()) ++after_cancel;
+      ++calls;
+      cancel.store(true);
+    };
+    RecipeResult r;
+    const Status s = run_recipe(recipe, &m, o, &r);
+    if (!s.cancelled() && !s.ok() && calls == 0) continue;  // needs inputs a grid lacks
+    ++recipes;
+    EXPECT_TRUE(s.cancelled()) << recipe << ": " << s.message();
+    EXPECT_EQ(calls, 1) << recipe;
+    EXPECT_EQ(after_cancel, 0) << recipe;
+    EXPECT_LE(measure_mesh(m, SampleRule::kDefault).inverted, inverted_before) << recipe;
+  }
+  EXPECT_GE(recipes, 5);
+}
+
+// A partitioned shape stage: cancelled at its first record (the end of its first phase) no other
+// phase starts; cancelled from another thread mid-phase, the workers start no further part and
+// the run ends Cancelled, the mesh valid.
+TEST(RecipeRegistry, PartitionedStageStopsAtTheCancelFlag) {
+  const Mesh input = jittered_grid(60, 7);  // 7,200 triangles
+  for (bool from_thread : {false, true}) {
+    Mesh m = input;
+    RecipeOptions o;
+    o.solver.threads = 2;
+    o.solver.partitions = 16;
+    std::atomic<bool> cancel{false};
+    o.cancel = &cancel;
+    int calls = 0, after_cancel = 0;
+    o.solver.progress = [&](const ProgressRecord&) {
+      if (cancel.load()) ++after_cancel;
+      ++calls;
+      if (!from_thread) cancel.store(true);
+    };
+    std::thread raiser;
+    if (from_thread) raiser = std::thread([&] { cancel.store(true); });
+    RecipeResult r;
+    const Status s = run_recipe("shape", &m, o, &r);
+    if (raiser.joinable()) raiser.join();
+    EXPECT_TRUE(s.cancelled()) << s.message();
+    EXPECT_LE(calls, 1) << from_thread;
+    EXPECT_EQ(after_cancel, 0);
+    EXPECT_EQ(measure_mesh(m, SampleRule::kDefault).inverted, 0);
+    if (from_thread) continue;
+    ASSERT_FALSE(r.stages.empty());
+    EXPECT_GT(r.stages[0].parts, 1) << "the stage was not partitioned";
+  }
 }
 
 // Fixed nodes keep their exact bits in every recipe that moves interior nodes; the boundary

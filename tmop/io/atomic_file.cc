@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <thread>
 
 namespace tmop {
 namespace {
@@ -53,6 +54,14 @@ void write_all(int fd, const char* s) {
   }
 }
 
+// cancel_on_signal: the first signal only raises g_cancel (and records which signal came);
+// a second one, or any signal once g_immediate is set, takes the immediate path on_signal.
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
+              "the signal handler stores to lock-free atomics only");
+std::atomic<bool> g_cancel{false};
+std::atomic<int> g_cancel_signal{0};
+std::atomic<bool> g_immediate{true};
+
 extern "C" void on_signal(int sig) {
   for (int i = 0; i < kSlots; ++i)
     if (g_state[i].load() == kLive) ::unlink(g_path[i]);
@@ -60,6 +69,28 @@ extern "C" void on_signal(int sig) {
   write_all(2, sig == SIGINT ? ": interrupted by SIGINT" : ": interrupted by SIGTERM");
   write_all(2, "; no partial output left\n");
   ::_exit(130);
+}
+
+// cancel_on_signal's thread: SIGINT and SIGTERM are blocked in every thread and taken here
+// synchronously by sigwait, so no library's own handler (METIS installs one for SIGTERM around
+// its calls and fails the call) ever sees them.
+void wait_for_signals(sigset_t set) {
+  for (;;) {
+    int sig = 0;
+    if (::sigwait(&set, &sig) != 0) continue;
+    if (g_immediate.load() || g_cancel.load()) on_signal(sig);
+    g_cancel_signal.store(sig);
+    g_cancel.store(true);
+  }
+}
+
+void install(void (*handler)(int)) {
+  struct sigaction sa;
+  std::memset(&sa, 0, sizeof sa);
+  sa.sa_handler = handler;
+  sigfillset(&sa.sa_mask);  // the handler runs once, not interrupted by the other signal
+  ::sigaction(SIGINT, &sa, nullptr);
+  ::sigaction(SIGTERM, &sa, nullptr);
 }
 
 std::string directory_of(const std::string& path) {
@@ -71,12 +102,27 @@ std::string directory_of(const std::string& path) {
 
 void remove_temporaries_on_signal(const char* program) {
   std::snprintf(g_program, sizeof g_program, "%s", program);
-  struct sigaction sa;
-  std::memset(&sa, 0, sizeof sa);
-  sa.sa_handler = on_signal;
-  sigfillset(&sa.sa_mask);  // the handler runs once, not interrupted by the other signal
-  ::sigaction(SIGINT, &sa, nullptr);
-  ::sigaction(SIGTERM, &sa, nullptr);
+  g_immediate.store(true);
+  install(on_signal);
+}
+
+const std::atomic<bool>* cancel_on_signal(const char* program) {
+  std::snprintf(g_program, sizeof g_program, "%s", program);
+  g_immediate.store(false);
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  ::pthread_sigmask(SIG_BLOCK, &set, nullptr);  // threads created later inherit the mask
+  std::thread(wait_for_signals, set).detach();
+  return &g_cancel;
+}
+
+int cancel_signal() { return g_cancel_signal.load(); }
+
+bool stop_cancelling_on_signal() {
+  g_immediate.store(true);
+  return g_cancel.load();
 }
 
 TempFile::TempFile(const std::string& path, const std::string& suffix) : path_(path) {

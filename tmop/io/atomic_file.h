@@ -3,7 +3,8 @@
 // output's directory, filled, then renamed over the output. OUT either holds the complete new
 // file or is untouched; on failure the temporary file is removed. While a temporary file exists
 // it is registered, so remove_temporaries_on_signal's handler can delete it when SIGINT or
-// SIGTERM ends the program mid-write: nothing partial is left anywhere.
+// SIGTERM ends the program mid-write: nothing partial is left anywhere. cancel_on_signal turns
+// the first signal into a cancel flag for a long run (tmop_optimize) instead.
 //
 //   write_file_atomically: the whole content at once (meshes, reports, SVG pictures).
 //   TempFile: for writers that need a path of their own (OpenMesh picks its format by the
@@ -11,6 +12,7 @@
 #ifndef TMOP_IO_ATOMIC_FILE_H_
 #define TMOP_IO_ATOMIC_FILE_H_
 
+#include <atomic>
 #include <string>
 #include <string_view>
 
@@ -25,6 +27,21 @@ Status write_file_atomically(const std::string& path, std::string_view bytes);
 // temporary file, print "PROGRAM: interrupted by SIGINT; no partial output left" on stderr and
 // end the process with exit code 130. `program` is copied (at most 63 characters).
 void remove_temporaries_on_signal(const char* program);
+
+// For a long run that cancels cleanly; call it before any thread is started: blocks SIGINT and
+// SIGTERM (every later thread inherits the mask) and takes them in a thread of its own (sigwait,
+// so no other handler, e.g. METIS's, sees them). The first signal only raises the returned flag
+// (a lock-free atomic), to be passed as
+// RecipeOptions::cancel; the caller then stops, writes nothing and reports the signal
+// (cancel_signal()). A second signal while cancelling takes remove_temporaries_on_signal's
+// immediate path (temporaries removed, one line, exit 130).
+const std::atomic<bool>* cancel_on_signal(const char* program);
+// The signal that raised cancel_on_signal's flag (SIGINT or SIGTERM), 0 when none came.
+int cancel_signal();
+// Before writing outputs: from now on a signal takes the immediate path (the temporary file
+// being written is removed, nothing is renamed into place). Returns whether the flag was raised
+// before the switch: the caller then writes nothing.
+bool stop_cancelling_on_signal();
 
 class TempFile {
  public:

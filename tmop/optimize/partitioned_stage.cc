@@ -125,8 +125,12 @@ Status run_phase(Mesh* mesh, const StageContext& ctx, const IdealTable& table,
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return pieces[a].size() > pieces[b].size(); });
   std::atomic<std::size_t> next{0};
+  // After a cancel no worker starts another part: the parts not solved stay at the phase's
+  // start (each part moves only its own vertices, so the mix is a state a phase can leave).
+  const ProgressCallback& progress = ctx.spec->solver.progress;
   auto work = [&](int w) {
     for (std::size_t k = next++; k < order.size(); k = next++) {
+      if (progress.cancelled()) break;
       const int i = order[k];
       outcomes[i] = solve_part(*mesh, start, ctx, table, vc, cp, pieces[i], seconds, &(*scratch)[w],
                                &mesh->coords);
@@ -281,6 +285,11 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
         pieces = &restricted;
       }
       PhaseTotals totals;
+      if (so.progress.cancelled()) {  // cancelled from another thread during the last phase
+        *reason = "cancelled";
+        out_of_time = true;
+        break;
+      }
       if (!pieces->empty()) {
         s = run_phase(mesh, ctx, table, vc, cp, *pieces, threads, so.max_seconds - elapsed,
                       &scratch, result, &totals);

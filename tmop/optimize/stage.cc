@@ -178,6 +178,7 @@ Status solve_whole(Mesh* mesh, StageContext& ctx, const IdealTable& table,
   const int surface_budget = spec.solver.max_iterations * (ctx.powered ? 4 : 1);
   std::vector<double> round_start;
   for (int frame_round = 0; frame_round < frame_rounds; ++frame_round) {
+    if (spec.solver.progress.cancelled()) break;  // no further round after a cancel
     if (frame_round > 0) {
       const std::vector<double> previous_frames = ctx.frames.F;
       update_surface_frames(*mesh, *spec.boundary, &ctx.frames);
@@ -221,7 +222,7 @@ Status solve_whole(Mesh* mesh, StageContext& ctx, const IdealTable& table,
         metrics.push_back(std::make_unique<UntangleMetric>(d, eps, theta));
         for (SamplePointCost& cost : assembly.costs()) cost.set_metric(0, metrics.back().get());
         so.max_num_iterations = spec.untangle_round_iterations;
-        if (!budget()) break;
+        if (spec.solver.progress.cancelled() || !budget()) break;
         if (!solve()) return Status::Failure("solver failed: " + summary.message);
         result->final_eps = eps;
         solved_rounds = info->untangle_rounds = round + 1;

@@ -75,6 +75,7 @@ Status equal_edge(Mesh* mesh, const EqualEdgeOptions& options, RecipeResult* res
   guard.soft_rounds = options.shape_guard_weight > 0 ? 3 : 0;
   guard.rounds = options.guard_rounds + guard.soft_rounds;
   guard.threads = options.solver.threads;
+  guard.progress = options.solver.progress;
   GuaranteeBaseline baseline;
   if (guard.enabled) baseline = guarantee_baseline(*mesh, guard.threads);
   std::vector<char> fixed = options.fixed;

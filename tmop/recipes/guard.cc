@@ -68,6 +68,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
   double best_score = input_score;
   for (int round = 0;; ++round) {
     Status s = solve(fixed, weight, round);
+    if (options.progress.cancelled()) return Status::Cancelled("guard: cancelled");
     if (!s.ok() && warm) {
       // A start the stage refuses (e.g. a surface cell folded against the geometry's normal,
       // which the plane-wise validity check above cannot see): the round again from the input.

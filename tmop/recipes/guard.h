@@ -15,6 +15,7 @@
 
 #include "tmop/core/status.h"
 #include "tmop/mesh/mesh.h"
+#include "tmop/optimize/solver_options.h"
 #include "tmop/quality/guarantees.h"
 #include "tmop/recipes/recipe_result.h"
 
@@ -37,6 +38,10 @@ struct GuardOptions {
   int soft_rounds = 0;
   double soft_factor = 8;
   bool verbose = false;  // print the broken guarantees of each round (stdout)
+  // The recipe's progress callback (shared cancel state): once it is cancelled no further round
+  // starts and guarded_solve returns Status::Cancelled with the mesh as the stopped solve left
+  // it (valid; the guarantees are not checked on a cancelled run).
+  ProgressCallback progress;
 };
 
 // solve(fixed, cell_weight, round): optimizes *mesh in place from its current coordinates (the

@@ -150,6 +150,7 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
   guard.rounds = options.guard_rounds;
   guard.threads = threads;
   guard.verbose = options.solver.verbose;
+  guard.progress = options.solver.progress;
   guard.soft_rounds = options.guard_soft_rounds;
   SampleSet weighted_points;  // canonical + extra points, for the soft rounds' cell weights
   auto solve = [&](const std::vector<char>& held, const std::vector<double>& cell_weight,

@@ -400,6 +400,10 @@ void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeo
       return;
     }
     result->stages.push_back(sr);
+    if (st.solver.progress.cancelled()) {  // cancelled: the curved nodes where this pass began
+      mesh->coords = start;
+      return;
+    }
     std::vector<char> violates;
     std::string first;
     const int violators = find_violators(*mesh, m0, b0, g0, options, &violates, &first);
@@ -525,7 +529,8 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
     lo.fixed = fixed;
     RecipeResult lr;
     Status s = improve_shape(&linear, lo, &lr);
-    if (!s.ok()) {
+    if (s.ok() && lo.solver.progress.cancelled()) s = Status::Cancelled("shape: cancelled");
+    if (!s.ok()) {  // failed or cancelled: the input
       mesh->coords = original;
       result->after = result->before;
       return s;

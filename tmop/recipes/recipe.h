@@ -21,9 +21,11 @@
 // Inputs: the mesh (moved in place, in tmop's orientation convention), RecipeOptions.
 // Output: *result (stages, measures before / after). Failure: a one-line Status (bad options,
 // an inverted input for a barrier recipe, a recipe's own failure); Status::Cancelled when the
-// progress callback returned false or options.cancel was raised: the mesh is then valid (as
-// the stopped stage left it; barrier stages never invert, untangling never ends with more
-// inverted cells than the input).
+// progress callback returned false or options.cancel was raised: no further solve, round, sweep
+// or part starts, and the mesh is valid: as the stopped solve left it (barrier stages never
+// invert; the guard's guarantees are not checked), untangling keeps its best state and never ends
+// with more inverted cells than the input, quadratic_shape gives back the input when its corner
+// mesh's solve was cancelled.
 #ifndef TMOP_RECIPES_RECIPE_H_
 #define TMOP_RECIPES_RECIPE_H_
 

@@ -130,6 +130,7 @@ Status remove_slivers(Mesh* mesh, const SliverOptions& options, RecipeResult* re
   guard.guarantees.means = false;
   guard.rounds = options.guard_rounds;
   guard.threads = options.solver.threads;
+  guard.progress = options.solver.progress;
   GuaranteeBaseline baseline;
   if (guard.enabled) baseline = guarantee_baseline(*mesh, guard.threads);
   auto solve = [&](const std::vector<char>& held, const std::vector<double>&, int round) {
