@@ -56,9 +56,12 @@ void round_trip(const tmop::Mesh& mesh, bool binary) {
   tmop::Mesh again;
   const tmop::Status r = tmop::read_mesh(out, &again);
   std::remove(out.c_str());
-  if (!r.ok()) fail("round trip: written file does not read back: " + r.message());
+  if (!r.ok())
+    fail(std::string("round trip (") + (binary ? "binary" : "ascii") +
+         "): written file does not read back: " + r.message());
   if (again.num_cells() != mesh.num_cells() || again.num_vertices() != mesh.num_vertices())
-    fail("round trip: " + std::to_string(mesh.num_cells()) + " cells, " +
+    fail(std::string("round trip (") + (binary ? "binary" : "ascii") +
+         "): " + std::to_string(mesh.num_cells()) + " cells, " +
          std::to_string(mesh.num_vertices()) + " nodes -> " + std::to_string(again.num_cells()) +
          " cells, " + std::to_string(again.num_vertices()) + " nodes");
 }
