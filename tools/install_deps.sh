@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages tmop needs that are missing (nothing when all are there).
 set -euo pipefail
-pkgs=(build-essential cmake pkg-config libceres-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
+pkgs=(build-essential cmake clang libclang-rt-14-dev pkg-config libceres-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
       libopenmesh-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev gmsh python3 python3-gmsh
       python3-meshio python3-numpy libexodusii-dev python3-netcdf4
       libcgns-dev python3-h5py libmetis-dev)

@@ -13,3 +13,9 @@ cmake --build build-asan -j"$(nproc)" --target tmop_io_tests tmop_mesh_tests tmo
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -L 'io|mesh|element|quality' \
   --timeout 900
+# libFuzzer targets of the mesh readers (docs/fuzzing.md): a short timed run per family and the
+# replay of every recorded finding.
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTMOP_WERROR=ON \
+  -DTMOP_FUZZ=ON -DTMOP_BUILD_TOOLS=OFF -DTMOP_BUILD_TESTS=OFF -DTMOP_BUILD_BENCH=OFF >/dev/null
+cmake --build build-fuzz -j"$(nproc)" --target tmop_fuzz_read
+ctest --test-dir build-fuzz --output-on-failure -j"$(nproc)" -L fuzz --timeout 900

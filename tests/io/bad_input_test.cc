@@ -74,6 +74,7 @@ TEST(BadInput, MessagesNameTheProblemAndItsPlace) {
       {"wrong_datasize22.msh", "wrong_datasize22.msh:2: binary data size 4"},
       {"mixed_dimensions41.msh", "mixed_dimensions41.msh:18: element type tet4 (dimension 3)"},
       {"mixed_dimensions.mesh", "mixed_dimensions.mesh:9: Tetrahedra (3D cells) in a Dimension 2"},
+      {"repeated_vertices.mesh", "repeated_vertices.mesh:8: repeated Vertices section"},
       {"index_out_of_range.mesh", "index_out_of_range.mesh:10: vertex index 4 out of range 1..3"},
       {"unknown_cell_type.vtk", "unknown_cell_type.vtk:10: cell 0: unsupported VTK cell type 42"},
       {"huge_point_count.vtk", "huge_point_count.vtk:5: declared value count 2999999997"},

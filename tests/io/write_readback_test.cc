@@ -108,5 +108,30 @@ TEST(WriteReadback, StlCoincidentVerticesInDifferentTrianglesReadBackMerged) {
   }
 }
 
+// Fuzz finding (tests/fuzz/regressions/stl/flat_z_1e-38.stl): two STL corners differing only by
+// a z of 1e-38 made the mesh "planar up to round-off", the flattened mesh held two vertices at
+// one point, and its STL read back with one vertex fewer. Such a mesh now stays 3D.
+TEST(WriteReadback, FlatteningNeverPutsTwoVerticesOnOnePoint) {
+  const std::string dir = test::temp_dir();
+  Mesh m;
+  m.space_dim = 3;
+  const double x[6][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 1e-38}, {2, 0, 0}, {2, 1, 0}};
+  for (const auto& p : x) m.add_vertex(p);
+  const std::int32_t a[3] = {0, 1, 2}, b[3] = {3, 4, 5};
+  m.add_cell(CellType::kTri3, a);
+  m.add_cell(CellType::kTri3, b);
+  m.cell_region.assign(2, 0);
+  m.cell_entity.assign(2, 0);
+  ASSERT_TRUE(write_mesh(dir + "/z.stl", m).ok());
+  Mesh back;
+  ASSERT_TRUE(read_mesh(dir + "/z.stl", &back).ok());
+  EXPECT_EQ(back.space_dim, 3);
+  EXPECT_EQ(back.num_vertices(), 6);
+  ASSERT_TRUE(write_mesh(dir + "/z2.stl", back).ok());
+  Mesh again;
+  ASSERT_TRUE(read_mesh(dir + "/z2.stl", &again).ok());
+  EXPECT_EQ(again.num_vertices(), 6);
+}
+
 }  // namespace
 }  // namespace tmop

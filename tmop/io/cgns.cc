@@ -92,8 +92,13 @@ struct CgFile {
 };
 
 [[noreturn]] void cg_fail(const std::string& path, const std::string& what) {
+  // libcgns's message can quote bytes of the file (a zone type name, say): control bytes become
+  // '?' and it is cut at 200 characters, so the error stays one printable line (a fuzz finding).
   std::string msg = cg_get_error();
   std::replace(msg.begin(), msg.end(), '\n', ' ');
+  for (char& c : msg)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  if (msg.size() > 200) msg = msg.substr(0, 200) + "...";
   throw Error(path + ": " + what + (msg.empty() ? "" : " (" + msg + ")"));
 }
 

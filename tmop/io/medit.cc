@@ -78,9 +78,13 @@ class MeditReader {
         s_.integer(1, 4, "mesh version");
         have_version = true;
       } else if (t == "Dimension") {
+        // A second Vertices or Dimension section would leave the first one's data behind
+        // (two medit:ref arrays, coordinates of another dimension): refused.
+        if (dim_ != 0) s_.fail_at(p, "repeated Dimension section");
         dim_ = static_cast<int>(s_.integer(2, 3, "dimension"));
       } else if (t == "Vertices") {
         if (dim_ == 0) s_.fail_at(p, "Vertices before Dimension");
+        if (have_vertices) s_.fail_at(p, "repeated Vertices section");
         read_vertices();
         have_vertices = true;
       } else if (t == "End") {

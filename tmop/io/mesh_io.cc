@@ -9,6 +9,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <functional>
+#include <unordered_map>
+#include <utility>
+#include <vector>
 
 #include "tmop/io/atomic_file.h"
 #include "tmop/io/formats.h"
@@ -42,6 +46,26 @@ bool is_known_ext(const std::string& ext) {
          is_openmesh_ext(ext);
 }
 
+// True when dropping z would put two vertices that differ only in z on one point (a fuzzed STL:
+// (x, y, 0) and (x, y, 1e-38)). Formats that name corners by their coordinates (STL) would
+// then merge them on the next read, so such a mesh stays 3D.
+bool flattening_merges_vertices(const std::vector<double>& coords) {
+  struct XyHash {
+    std::size_t operator()(const std::pair<double, double>& p) const {
+      return std::hash<double>()(p.first) * 1099511628211ull ^ std::hash<double>()(p.second);
+    }
+  };
+  std::unordered_map<std::pair<double, double>, double, XyHash> z_at;
+  const std::size_t n = coords.size() / 3;
+  z_at.reserve(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto it =
+        z_at.emplace(std::make_pair(coords[3 * v], coords[3 * v + 1]), coords[3 * v + 2]);
+    if (!it.second && it.first->second != coords[3 * v + 2]) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 namespace io {
@@ -65,6 +89,7 @@ void finish_read(Mesh* mesh) {
     zdev = std::max(zdev, std::abs(mesh->coords[3 * v + 2] - z0));
   }
   if (!(zdev <= 1e-12 * extent) && zdev != 0.0) flat = false;
+  if (flat && zdev != 0.0 && flattening_merges_vertices(mesh->coords)) flat = false;
   if (!flat) return;
   mesh->plane_z = std::abs(z0) <= 1e-12 * extent ? 0.0 : z0;
   for (std::size_t v = 0; v < n; ++v) {

@@ -34,7 +34,7 @@ Status read_node_list(const std::string& path, int num_vertices, std::vector<cha
         used = 0;
       }
       if (used != w.size() || w[0] == '+')
-        return Status::Failure(place + "'" + w.substr(0, 40) + "' is not a node index");
+        return Status::Failure(place + "'" + io::printable(w) + "' is not a node index");
       if (v < 0 || v >= num_vertices)
         return Status::Failure(place + "node " + w + " out of range 0.." +
                                std::to_string(num_vertices - 1));
