@@ -222,6 +222,23 @@ TEST(RecipeRegistry, PartitionedStageStopsAtTheCancelFlag) {
   }
 }
 
+// The cancel flag is watched, not only read at the next record: raised before the run (as a
+// signal during a stage's set-up does), the partitioned stage starts no phase and no part, so no
+// vertex moves. (Read only at records, phase 1 would run every part first: parts report none.)
+TEST(RecipeRegistry, CancelRaisedBeforeTheFirstRecordMovesNothing) {
+  const Mesh input = jittered_grid(60, 7);
+  Mesh m = input;
+  RecipeOptions o;
+  o.solver.threads = 2;
+  o.solver.partitions = 16;
+  std::atomic<bool> cancel{true};
+  o.cancel = &cancel;
+  RecipeResult r;
+  const Status s = run_recipe("shape", &m, o, &r);
+  EXPECT_TRUE(s.cancelled()) << s.message();
+  EXPECT_EQ(m.coords, input.coords);
+}
+
 // Fixed nodes keep their exact bits in every recipe that moves interior nodes; the boundary
 // stays fixed too (the fixed flags add to the boundary mode).
 TEST(RecipeRegistry, FixedNodesKeepTheirBits) {

@@ -67,19 +67,31 @@ class ProgressCallback {
   explicit operator bool() const { return state_ != nullptr; }
   // Reports one record; false when the run is (or now becomes) cancelled.
   bool operator()(const ProgressRecord& record) const {
-    if (!state_ || state_->cancelled.load()) return !state_;
+    if (!state_ || cancelled()) return !state_;
     if (!state_->call(record)) state_->cancelled.store(true);
     return !state_->cancelled.load();
   }
-  bool cancelled() const { return state_ && state_->cancelled.load(); }
+  // True once cancelled: a callback returned false, cancel() was called, or the watched flag
+  // (watch()) is raised, which takes effect at the next check without waiting for a record.
+  bool cancelled() const {
+    if (!state_) return false;
+    if (state_->watched && state_->watched->load()) state_->cancelled.store(true);
+    return state_->cancelled.load();
+  }
   void cancel() const {
     if (state_) state_->cancelled.store(true);
+  }
+  // Also cancelled as soon as *flag is true (e.g. RecipeOptions::cancel, raised by a signal or
+  // another thread). Not owned; must outlive every copy of the callback. Needs a callback set.
+  void watch(const std::atomic<bool>* flag) const {
+    if (state_) state_->watched = flag;
   }
 
  private:
   struct State {
     std::function<bool(const ProgressRecord&)> call;
     std::atomic<bool> cancelled{false};
+    const std::atomic<bool>* watched = nullptr;
   };
   std::shared_ptr<State> state_;
 };

@@ -445,6 +445,9 @@ Status run_recipe(const std::string& name, Mesh* mesh, const RecipeOptions& opti
       if (cancel && cancel->load()) return false;
       return !user || user(r);
     };
+    // The loops that start solves, rounds, phases and parts check cancelled(): they see the flag
+    // at once, not only after the next iteration's record (a stage's set-up can take seconds).
+    o.solver.progress.watch(cancel);
   }
   s = dispatch(name, mesh, o, result);
   if (o.solver.progress.cancelled())
