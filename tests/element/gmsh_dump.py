@@ -31,6 +31,16 @@ def dump_elements(limit=6):
             print("elem", t, nn, " ".join(repr(float(x)) for x in xs))
 
 
+def dump_both_second_orders():
+    """Dumps the current linear mesh at order 2, complete then incomplete, and leaves it linear."""
+    for incomplete in (0, 1):
+        gmsh.option.setNumber("Mesh.SecondOrderIncomplete", incomplete)
+        gmsh.model.mesh.setOrder(2)
+        dump_elements()
+        gmsh.model.mesh.setOrder(1)
+    gmsh.option.setNumber("Mesh.SecondOrderIncomplete", 0)
+
+
 gmsh.initialize()
 gmsh.option.setNumber("General.Terminal", 0)
 for t in [15, 1, 8, 2, 3, 4, 5, 6, 7, 9, 10, 11, 12, 16, 17, 18, 13, 19, 14]:
@@ -79,12 +89,7 @@ gmsh.model.mesh.generate(3)
 dump_elements()
 # The same wedges at order 2: complete (wedge18, what `gmsh -order 2` writes) and incomplete
 # (wedge15).
-for incomplete in (0, 1):
-    gmsh.option.setNumber("Mesh.SecondOrderIncomplete", incomplete)
-    gmsh.model.mesh.setOrder(2)
-    dump_elements()
-    gmsh.model.mesh.setOrder(1)
-gmsh.option.setNumber("Mesh.SecondOrderIncomplete", 0)
+dump_both_second_orders()
 gmsh.model.remove()
 # Serendipity quad8 / hex20: second order, incomplete, on a recombined square / transfinite cube.
 gmsh.option.setNumber("Mesh.SecondOrderIncomplete", 1)
@@ -122,12 +127,7 @@ gmsh.model.mesh.setRecombine(3, hex_box)
 gmsh.model.mesh.generate(3)
 dump_elements()
 # The same pyramids at order 2: complete (pyramid14) and incomplete (pyramid13).
-for incomplete in (0, 1):
-    gmsh.option.setNumber("Mesh.SecondOrderIncomplete", incomplete)
-    gmsh.model.mesh.setOrder(2)
-    dump_elements()
-    gmsh.model.mesh.setOrder(1)
-gmsh.option.setNumber("Mesh.SecondOrderIncomplete", 0)
+dump_both_second_orders()
 gmsh.model.remove()
 # gmsh's own basis functions of the pyramids at a few interior points:
 #   basis TYPE NUM_NODES x y z N_0 .. N_{n-1}

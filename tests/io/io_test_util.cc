@@ -74,6 +74,26 @@ Mesh straight_cells_mesh(const std::vector<CellType>& types) {
   return m;
 }
 
+std::string check_patran_node_order(const std::string& name, const std::string& kind) {
+  const std::vector<CellType> types = {
+      CellType::kTri6,  CellType::kQuad8,   CellType::kQuad9,     CellType::kTet10,
+      CellType::kHex20, CellType::kWedge15, CellType::kPyramid13, CellType::kPyramid14};
+  const Mesh mesh = straight_cells_mesh(types);
+  std::string failure = round_trip(mesh, {"r_" + name});
+  if (!failure.empty()) return failure;
+  const std::string path = temp_dir() + "/" + name;
+  const Status s = write_mesh(path, mesh);
+  if (!s.ok()) return s.message();
+  std::string out;
+  const std::string cmd = std::string("/usr/bin/python3 ") + TMOP_SOURCE_DIR +
+                          "/tests/io/patran_order_check.py " + kind + " '" + path + "'";
+  if (run(cmd, &out) != 0) return out;
+  for (CellType t : types)
+    if (out.find(std::string("checked ") + cell_name(t) + " 1") == std::string::npos)
+      return std::string(cell_name(t)) + " not checked: " + out;
+  return "";
+}
+
 std::string diff_meshes(const Mesh& a, const Mesh& b, bool compare_entity, double tol) {
   std::ostringstream s;
   if (a.space_dim != b.space_dim) {

@@ -20,6 +20,10 @@ Mesh make_mesh(const std::vector<CellType>& types, int space_dim = 3);
 // (a skew, non-orthogonal one), every node its own vertex, so each mid-edge node is exactly the
 // midpoint of its edge's corners. Cell c has region c + 1, entity 0.
 Mesh straight_cells_mesh(const std::vector<CellType>& types);
+// Writes straight_cells_mesh of every quadratic type Exodus and CGNS hold to dir/NAME and runs
+// tests/io/patran_order_check.py KIND on it ("exodus" or "cgns"): "" when every type was checked
+// against the documented node order, else the failure. Also round-trips the mesh through tmop.
+std::string check_patran_node_order(const std::string& name, const std::string& kind);
 // Every type tmop knows, 3D.
 std::vector<CellType> all_types();
 // Every type that has a VTK cell type (all but pyramid14), for .vtk / .vtu.
