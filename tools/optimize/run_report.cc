@@ -16,12 +16,12 @@
 namespace tmop_tools {
 namespace {
 
-// Every flag defined by tmop_optimize.cc (not glog's or gflags'), by name.
+// Every flag of tmop_optimize (defined in tools/optimize/flags.cc; not glog's or gflags'), by name.
 std::vector<gflags::CommandLineFlagInfo> tool_flags() {
   std::vector<gflags::CommandLineFlagInfo> all, out;
   gflags::GetAllFlags(&all);
   for (const auto& f : all)
-    if (f.filename.find("tmop_optimize.cc") != std::string::npos) out.push_back(f);
+    if (f.filename.find("tools/optimize/flags.cc") != std::string::npos) out.push_back(f);
   return out;
 }
 
