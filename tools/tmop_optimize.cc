@@ -36,6 +36,12 @@
 #include "tools/optimize/run_report.h"
 #include "tools/parse_flags.h"
 
+#ifdef TMOP_WITH_MPI
+#include <memory>
+
+#include "tmop/parallel/mpi_exchange.h"
+#endif
+
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "improve a mesh by node movement\n"
@@ -46,6 +52,17 @@ int main(int argc, char** argv) {
   // the quality report), after which multi-MB vectors land in the heap and leave it fragmented;
   // 1M tets: peak 1,029 -> 988 MB, the same time (docs/benchmarks.md).
   mallopt(M_MMAP_THRESHOLD, 4 << 20);
+#endif
+#ifdef TMOP_WITH_MPI
+  // Under mpirun every rank runs the same recipe on the same mesh and solves its share of the
+  // parts of partitioned stages (tmop/parallel/mpi_exchange.h); rank 0 alone prints and writes.
+  tmop::MpiSession mpi(&argc, &argv);
+  std::unique_ptr<tmop::MpiExchange> exchange;
+  if (mpi.active() && mpi.size() > 1) exchange.reset(new tmop::MpiExchange(MPI_COMM_WORLD));
+  if (mpi.rank() != 0) {
+    if (!std::freopen("/dev/null", "w", stdout) || !std::freopen("/dev/null", "w", stderr))
+      return 2;
+  }
 #endif
   tmop_tools::parse_flags(&argc, &argv);
   if (!FLAGS_from_report.empty()) {
@@ -75,5 +92,14 @@ int main(int argc, char** argv) {
   if (const int rc = tmop_tools::load_inputs(composed, &options, &in)) return rc;
   options.cancel = cancel;
   options.solver.progress = tmop_tools::remembering_last_iteration(options.solver.progress);
+#ifdef TMOP_WITH_MPI
+  options.solver.exchange = exchange.get();
+  in.writes = mpi.rank() == 0;
+  const int rc = tmop_tools::run(options, &in);
+  // A rank cancelled by a signal may stop where the others wait for it: end them all.
+  if (rc == 130 && exchange) mpi.abort(130);
+  return rc;
+#else
   return tmop_tools::run(options, &in);
+#endif
 }

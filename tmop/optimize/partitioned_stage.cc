@@ -8,6 +8,7 @@
 #include <limits>
 #include <thread>
 
+#include "tmop/optimize/part_exchange.h"
 #include "tmop/optimize/part_solve.h"
 #include "tmop/partition/partition.h"
 #include "tmop/quality/parallel_for.h"
@@ -124,23 +125,39 @@ Status run_phase(Mesh* mesh, const StageContext& ctx, const IdealTable& table,
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return pieces[a].size() > pieces[b].size(); });
+  // With an exchange, this process solves its share: the parts dealt to the ranks in turn,
+  // largest first, back and forth (rank 0 1 ... R-1 R-1 ... 0 ...), so the shares are even.
+  PartExchange* exchange = ctx.spec->solver.exchange;
+  const int ranks = exchange ? exchange->size() : 1, me = exchange ? exchange->rank() : 0;
+  std::vector<int> owner(pieces.size(), 0);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const int round = static_cast<int>(k) / ranks, at = static_cast<int>(k) % ranks;
+    owner[order[k]] = round % 2 == 0 ? at : ranks - 1 - at;
+  }
+  std::vector<int> mine;
+  for (int i : order)
+    if (owner[i] == me) mine.push_back(i);
   std::atomic<std::size_t> next{0};
   // After a cancel no worker starts another part: the parts not solved stay at the phase's
   // start (each part moves only its own vertices, so the mix is a state a phase can leave).
   const ProgressCallback& progress = ctx.spec->solver.progress;
   auto work = [&](int w) {
-    for (std::size_t k = next++; k < order.size(); k = next++) {
+    for (std::size_t k = next++; k < mine.size(); k = next++) {
       if (progress.cancelled()) break;
-      const int i = order[k];
+      const int i = mine[k];
       outcomes[i] = solve_part(*mesh, start, ctx, table, vc, cp, pieces[i], seconds, &(*scratch)[w],
                                &mesh->coords);
     }
   };
-  const int workers = std::max(1, std::min<int>(threads, static_cast<int>(pieces.size())));
+  const int workers = std::max(1, std::min<int>(threads, static_cast<int>(mine.size())));
   std::vector<std::thread> pool;
   for (int w = 1; w < workers; ++w) pool.emplace_back(work, w);
   work(0);
   for (std::thread& t : pool) t.join();
+  if (exchange) {
+    const Status s = exchange->share(pieces, owner, mesh->space_dim, &outcomes, &mesh->coords);
+    if (!s.ok()) return s;
+  }
   *totals = PhaseTotals();
   totals->parts = static_cast<int>(pieces.size());
   for (const std::vector<int>& p : pieces) totals->vertices += static_cast<int>(p.size());
@@ -266,13 +283,17 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
   // those that moved since (the rest of its parts is where that phase left it at its optimum).
   std::vector<std::vector<double>> after(3);
   bool out_of_time = false;
+  // Time limits and cancels are decided by every process together (part_exchange.h).
+  const auto agreed = [&so](bool local) {
+    return so.exchange ? so.exchange->max_of(local ? 1.0 : 0.0) > 0 : local;
+  };
   for (int sweep = 1; sweep <= std::max(1, so.max_sweeps) && !out_of_time; ++sweep) {
     const double sweep_initial = cost;
     double sweep_decrease = 0;
     for (int ph = 0; ph < 3; ++ph) {
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (elapsed >= so.max_seconds) {
+      if (agreed(elapsed >= so.max_seconds)) {
         *reason = "time limit reached";
         out_of_time = true;
         break;
@@ -285,7 +306,7 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
         pieces = &restricted;
       }
       PhaseTotals totals;
-      if (so.progress.cancelled()) {  // cancelled from another thread during the last phase
+      if (agreed(so.progress.cancelled())) {  // cancelled from another thread during the last phase
         *reason = "cancelled";
         out_of_time = true;
         break;
@@ -328,7 +349,7 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
         pr.stage = spec.name;
         so.progress(pr);
       }
-      if (so.progress.cancelled()) {  // the next phase does not start
+      if (agreed(so.progress.cancelled())) {  // the next phase does not start
         *reason = "cancelled";
         out_of_time = true;
         break;

@@ -16,6 +16,8 @@ struct Inputs {
   tmop::WriteOptions write;
   tmop::OrientationReport orientation;
   bool flipped = false;
+  // This process writes the output and the report (under mpirun: rank 0 only).
+  bool writes = true;
 };
 
 // Reads the mesh, the fixed nodes, the moved and reference meshes; checks that the output format

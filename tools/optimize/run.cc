@@ -184,13 +184,13 @@ int run(const RecipeOptions& o, Inputs* in) {
   if (refresh_quality_fields(quality_after, &mesh))
     std::printf("quality fields of the input replaced by the result's\n");
   if (in->flipped) reorient(&mesh);
-  if (write) {
+  if (write && in->writes) {
     s = write_mesh(FLAGS_output, mesh, in->write);
     if (!s.ok()) return fail(2, s.message());
     std::printf("wrote %s\n", FLAGS_output.c_str());
   }
   // The report is written on failure too: that is when it is needed.
-  if (!FLAGS_report.empty()) {
+  if (!FLAGS_report.empty() && in->writes) {
     tmop_tools::ReportInputs r;
     r.input = FLAGS_input;
     r.output = FLAGS_output;
