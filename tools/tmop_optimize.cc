@@ -95,6 +95,8 @@ int main(int argc, char** argv) {
 #ifdef TMOP_WITH_MPI
   options.solver.exchange = exchange.get();
   in.writes = mpi.rank() == 0;
+  in.piece = mpi.rank();
+  in.pieces = mpi.size();
   const int rc = tmop_tools::run(options, &in);
   // A rank cancelled by a signal may stop where the others wait for it: end them all.
   if (rc == 130 && exchange) mpi.abort(130);

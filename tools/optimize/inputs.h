@@ -18,6 +18,9 @@ struct Inputs {
   bool flipped = false;
   // This process writes the output and the report (under mpirun: rank 0 only).
   bool writes = true;
+  // A .pvtu output of a distributed run: this process writes piece `piece` of `pieces` (one per
+  // rank), the writing one also the index.
+  int piece = 0, pieces = 1;
 };
 
 // Reads the mesh, the fixed nodes, the moved and reference meshes; checks that the output format

@@ -184,7 +184,15 @@ int run(const RecipeOptions& o, Inputs* in) {
   if (refresh_quality_fields(quality_after, &mesh))
     std::printf("quality fields of the input replaced by the result's\n");
   if (in->flipped) reorient(&mesh);
-  if (write && in->writes) {
+  const bool pvtu =
+      FLAGS_output.size() > 5 && FLAGS_output.compare(FLAGS_output.size() - 5, 5, ".pvtu") == 0;
+  if (write && pvtu && in->pieces > 1) {
+    // A distributed run: each process writes its piece, the writing one also the index.
+    s = write_pvtu_piece(FLAGS_output, mesh, in->write, in->piece, in->pieces);
+    if (s.ok() && in->writes) s = write_pvtu_index(FLAGS_output, mesh, in->write, in->pieces);
+    if (!s.ok()) return fail(2, s.message());
+    if (in->writes) std::printf("wrote %s (%d pieces)\n", FLAGS_output.c_str(), in->pieces);
+  } else if (write && in->writes) {
     s = write_mesh(FLAGS_output, mesh, in->write);
     if (!s.ok()) return fail(2, s.message());
     std::printf("wrote %s\n", FLAGS_output.c_str());
