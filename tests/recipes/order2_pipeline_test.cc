@@ -14,20 +14,13 @@
 #include <map>
 #include <string>
 
+#include "run_command.h"
 #include "tmop/io/mesh_io.h"
 
 namespace tmop {
 namespace {
 
-int run(const std::string& cmd, std::string* out) {
-  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-  if (!p) return -1;
-  char buf[4096];
-  std::size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out->append(buf, n);
-  const int status = pclose(p);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+int run(const std::string& cmd, std::string* out) { return testing_recipes::run_command(cmd, out); }
 
 std::map<std::string, int> type_counts(const Mesh& m) {
   std::map<std::string, int> n;
