@@ -4,24 +4,12 @@
 #include <cstdio>
 #include <string>
 
+#include "tmop/mesh/topology.h"
+#include "tmop/recipes/vertex_moves.h"
+
 namespace tmop {
 
 namespace {
-
-// The sum over the per-type mean groups of their cells' measures: which of two results that
-// keep every guarantee is better by quality (the guarantees compare groups one by one).
-double guarantee_score(const GuaranteeBaseline& baseline, const GuaranteeValues& values) {
-  // The measures with a guaranteed mean, over the cells in a group (valid in the input).
-  double score = 0;
-  for (std::size_t c = 0; c < values.cell.size(); ++c)
-    for (int m = 0; m < kNumGuaranteeMeasures; ++m) {
-      const double v = values.cell[c][m];
-      if (baseline.cell_group[c][m] >= 0 &&
-          guarantee_measure_has_mean(static_cast<GuaranteeMeasure>(m)) && v == v)
-        score += v;
-    }
-  return score;
-}
 
 // Puts the vertices of the cells that break a guarantee back at their input positions, again on
 // the cells that break one then (a put-back vertex changes its neighbours), at most `passes`
@@ -54,6 +42,8 @@ bool revert_violators(Mesh* mesh, const std::vector<double>& original,
 Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardOptions& options,
                      std::vector<char> fixed, const GuardSolve& solve, RecipeResult* result) {
   const std::vector<double> original = mesh->coords;
+  std::vector<char> free_at_start(fixed.size());
+  for (std::size_t v = 0; v < fixed.size(); ++v) free_at_start[v] = !fixed[v];
   std::vector<double> weight(mesh->num_cells(), 1.0);
   result->guard_held_cells = 0;
   auto note = [&](const std::string& text) {
@@ -66,6 +56,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
   const double input_score =
       guarantee_score(baseline, baseline.input) + options.guarantees.tolerance;
   double best_score = input_score;
+  VertexMoveOptions moves;  // whole moves only on the boundary (which may slide)
   for (int round = 0;; ++round) {
     Status s = solve(fixed, weight, round);
     if (options.progress.cancelled()) return Status::Cancelled("guard: cancelled");
@@ -89,7 +80,8 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
     if (bad.empty()) {
       // Rounds that ended by holding every vertex give the input back: an earlier round's
       // result with its violators put back keeps the guarantees and some of the gain.
-      if (!best.empty() && mesh->coords == original) {
+      if (!best.empty() &&
+          (mesh->coords == original || guarantee_score(baseline, values) < best_score)) {
         mesh->coords = best;
         note("guard: an earlier round's result with its violators put back kept");
       }
@@ -103,6 +95,31 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       GuaranteeValues reverted = values;
       if (revert_violators(mesh, original, baseline, options, 8, &reverted)) {
         const double score = guarantee_score(baseline, reverted);
+        if (score > std::max(best_score, input_score)) best = mesh->coords, best_score = score;
+      }
+      // Then the good part of the move, vertex by vertex (vertex_moves.h), from the best result
+      // so far (or the input): where the violators are most of the mesh (pripyrtet's wedges and
+      // pyramids), putting them back gives the input back.
+      mesh->coords = best.empty() ? original : best;
+      GuaranteeValues kept =
+          best.empty() ? baseline.input : guarantee_values(*mesh, options.threads);
+      if (moves.whole_only.empty()) moves.whole_only = boundary_vertex_mask(*mesh);
+      GuaranteeOptions g1 = options.guarantees;
+      int changed = accept_vertex_moves(mesh, solved, baseline, g1, moves, &kept);
+      // The vertices whose move was not kept (interior, free): uphill on the measures instead.
+      std::vector<char> climb(mesh->num_vertices(), 0);
+      int climbers = 0;
+      for (int v = 0; v < mesh->num_vertices(); ++v) {
+        if (free_at_start[v] == 0 || moves.whole_only[v]) continue;
+        for (int a = 0; a < mesh->space_dim && !climb[v]; ++a) {
+          const std::size_t i = static_cast<std::size_t>(v) * mesh->space_dim + a;
+          climb[v] = mesh->coords[i] != solved[i];
+        }
+        climbers += climb[v];
+      }
+      if (climbers > 0) changed += climb_vertex_measures(mesh, climb, baseline, g1, 4, &kept);
+      if (changed > 0) {
+        const double score = guarantee_score(baseline, kept);
         if (score > std::max(best_score, input_score)) best = mesh->coords, best_score = score;
       }
       mesh->coords = solved;
