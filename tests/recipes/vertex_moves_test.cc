@@ -80,7 +80,7 @@ TEST(VertexMoves, ClimbKeepsTheGuarantees) {
   std::vector<char> movable = boundary_vertex_mask(mesh);
   for (char& f : movable) f = !f;
   GuaranteeValues values = baseline.input;
-  EXPECT_GT(climb_vertex_measures(&mesh, movable, baseline, {}, 2, &values), 10);
+  EXPECT_GT(climb_vertex_measures(&mesh, movable, baseline, {}, 2, 1000000, &values), 10);
   const GuaranteeValues fresh = guarantee_values(mesh, 1);
   EXPECT_TRUE(check_guarantees(baseline, fresh).empty());
   EXPECT_GT(guarantee_score(baseline, fresh), guarantee_score(baseline, baseline.input) + 0.1);

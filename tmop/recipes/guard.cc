@@ -50,13 +50,14 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
     if (!result->stages.empty()) result->stages.back().termination += "; " + text;
   };
   bool warm = false;  // this round starts from a warm start, not from the input
-  // The best result that kept every guarantee after its violators were put back (no solve).
+  // The best repaired result (no solve: violators put back, good vertex moves kept, climbed).
   // Kept only when it beats the input by more than the tolerance.
   std::vector<double> best;
   const double input_score =
       guarantee_score(baseline, baseline.input) + options.guarantees.tolerance;
   double best_score = input_score;
-  VertexMoveOptions moves;  // whole moves only on the boundary (which may slide)
+  VertexMoveOptions moves;
+  const bool surface = mesh->space_dim != mesh->dim();
   for (int round = 0;; ++round) {
     Status s = solve(fixed, weight, round);
     if (options.progress.cancelled()) return Status::Cancelled("guard: cancelled");
@@ -79,11 +80,12 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
     const std::vector<int> bad = guard_violators(baseline, values, g);
     if (bad.empty()) {
       // Rounds that ended by holding every vertex give the input back: an earlier round's
-      // result with its violators put back keeps the guarantees and some of the gain.
+      // repaired result keeps the guarantees and some of the gain (kept too when it scores
+      // higher than this round's result).
       if (!best.empty() &&
           (mesh->coords == original || guarantee_score(baseline, values) < best_score)) {
         mesh->coords = best;
-        note("guard: an earlier round's result with its violators put back kept");
+        note("guard: an earlier round's repaired result kept");
       }
       return Status::Ok();
     }
@@ -103,7 +105,11 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       mesh->coords = best.empty() ? original : best;
       GuaranteeValues kept =
           best.empty() ? baseline.input : guarantee_values(*mesh, options.threads);
-      if (moves.whole_only.empty()) moves.whole_only = boundary_vertex_mask(*mesh);
+      // Whole moves only where a vertex may slide (a part of its move leaves its curve or
+      // surface): the boundary, or every vertex of a surface mesh; those do not climb either.
+      if (moves.whole_only.empty())
+        moves.whole_only =
+            surface ? std::vector<char>(mesh->num_vertices(), 1) : boundary_vertex_mask(*mesh);
       GuaranteeOptions g1 = options.guarantees;
       int changed = accept_vertex_moves(mesh, solved, baseline, g1, moves, &kept);
       // The vertices whose move was not kept (interior, free): uphill on the measures instead.
@@ -117,7 +123,10 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
         }
         climbers += climb[v];
       }
-      if (climbers > 0) changed += climb_vertex_measures(mesh, climb, baseline, g1, 4, &kept);
+      // Bounded work: ~1 s plus 16 measures per cell.
+      const std::int64_t budget = 1000000 + 16 * static_cast<std::int64_t>(mesh->num_cells());
+      if (climbers > 0)
+        changed += climb_vertex_measures(mesh, climb, baseline, g1, 4, budget, &kept);
       if (changed > 0) {
         const double score = guarantee_score(baseline, kept);
         if (score > std::max(best_score, input_score)) best = mesh->coords, best_score = score;
@@ -168,8 +177,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
     if (!best.empty()) {
       mesh->coords = best;
       note("guard: " + std::to_string(bad.size()) +
-           " cells still broke a guarantee; kept an earlier round's result with its violators "
-           "put back");
+           " cells still broke a guarantee; kept an earlier round's repaired result");
       return Status::Ok();
     }
     // Out of rounds: step back towards the input along the last result's displacement.

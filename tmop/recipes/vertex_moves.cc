@@ -122,6 +122,7 @@ class MoveJudge {
                            cells_touched_.end());
     }
     const std::size_t m = cells_touched_.size();
+    measured_ += static_cast<std::int64_t>(m);
     rows_.clear();
     flags_.clear();
     for (int c : cells_touched_) {
@@ -162,6 +163,9 @@ class MoveJudge {
     return kept;
   }
 
+  // Cells measured so far (the work done).
+  std::int64_t measured() const { return measured_; }
+
   // The shortest distance from v to another node of its cells.
   double shortest(int v) const {
     const int sd = mesh_->space_dim;
@@ -191,6 +195,7 @@ class MoveJudge {
   std::vector<std::uint8_t> flags_;
   std::vector<double> from_;
   std::vector<int> cells_touched_;
+  std::int64_t measured_ = 0;
 };
 
 }  // namespace
@@ -241,79 +246,83 @@ bool direction(int dir, int sd, double* u) {
 
 }  // namespace
 
+namespace {
+
+// One uphill move of the n (1 or 2) vertices vs translated together, if any: along the central-
+// difference gradient of their cells' score (1e-4 of the shortest edge h), steps h/8, h/32,
+// h/128; at a kink of the measures (a minimum over corners: both sides of every axis lower the
+// score) the gradient says nothing, and the axis and diagonal directions are tried at h/8, h/32.
+bool climb_group(Mesh* mesh, MoveJudge* judge, const int* vs, int n) {
+  const int sd = mesh->space_dim;
+  double h = std::numeric_limits<double>::infinity();
+  for (int j = 0; j < n; ++j) h = std::min(h, judge->shortest(vs[j]));
+  if (!(h > 0) || !std::isfinite(h)) return false;
+  double x[6] = {0, 0, 0, 0, 0, 0}, trial[6], grad[3] = {0, 0, 0}, up, down, gain;
+  for (int j = 0; j < n; ++j)
+    for (int a = 0; a < sd; ++a) x[j * sd + a] = mesh->vertex(vs[j])[a];
+  auto place = [&](const double* u, double s) {
+    for (int j = 0; j < n; ++j)
+      for (int a = 0; a < sd; ++a) trial[j * sd + a] = x[j * sd + a] + s * u[a];
+  };
+  const double e = 1e-4 * h;
+  bool defined = true;
+  for (int a = 0; a < sd && defined; ++a) {
+    double u[3] = {0, 0, 0};
+    u[a] = 1;
+    place(u, e);
+    judge->try_positions(vs, n, trial, false, &up);
+    place(u, -e);
+    judge->try_positions(vs, n, trial, false, &down);
+    defined = std::isfinite(up) && std::isfinite(down);
+    grad[a] = (up - down) / (2 * e);
+  }
+  double norm = 0;
+  for (int a = 0; a < sd; ++a) norm += grad[a] * grad[a];
+  norm = std::sqrt(norm);
+  if (defined && norm > 0) {
+    for (int a = 0; a < sd; ++a) grad[a] /= norm;
+    for (double s = h / 8; s >= h / 128; s /= 4) {
+      place(grad, s);
+      if (judge->try_positions(vs, n, trial, true, &gain)) return true;
+    }
+  }
+  for (int dir = 0; dir < 27; ++dir) {
+    double u[3];
+    if (!direction(dir, sd, u)) continue;
+    for (double s = h / 8; s >= h / 32; s /= 4) {
+      place(u, s);
+      if (judge->try_positions(vs, n, trial, true, &gain)) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 int climb_vertex_measures(Mesh* mesh, const std::vector<char>& movable,
                           const GuaranteeBaseline& baseline, const GuaranteeOptions& guarantees,
-                          int passes, GuaranteeValues* values) {
-  const int sd = mesh->space_dim;
+                          int passes, std::int64_t budget, GuaranteeValues* values) {
   if (mesh->dim() < 2 || static_cast<int>(movable.size()) != mesh->num_vertices()) return 0;
   MoveJudge judge(mesh, baseline, guarantees, values);
   std::vector<std::array<std::int32_t, 2>> edges;
   for (const auto& e : mesh_edges(*mesh))
     if (movable[e[0]] && movable[e[1]]) edges.push_back(e);
+  std::vector<char> stuck(mesh->num_vertices(), 0);
   int kept = 0;
-  for (int pass = 0; pass < passes; ++pass) {
+  for (int pass = 0; pass < passes && judge.measured() < budget; ++pass) {
     int kept_in_pass = 0;
-    for (int v = 0; v < mesh->num_vertices(); ++v) {
+    for (int v = 0; v < mesh->num_vertices() && judge.measured() < budget; ++v) {
       if (!movable[v]) continue;
-      const double h = judge.shortest(v);
-      if (!(h > 0) || !std::isfinite(h)) continue;
-      // Central differences of the score of v's cells, at 1e-4 of its shortest edge.
-      double x[3] = {0, 0, 0}, grad[3] = {0, 0, 0}, trial[3], up, down;
-      for (int a = 0; a < sd; ++a) x[a] = mesh->vertex(v)[a];
-      const double e = 1e-4 * h;
-      bool defined = true;
-      for (int a = 0; a < sd && defined; ++a) {
-        std::copy(x, x + 3, trial);
-        trial[a] = x[a] + e;
-        judge.try_position(v, trial, false, &up);
-        trial[a] = x[a] - e;
-        judge.try_position(v, trial, false, &down);
-        defined = std::isfinite(up) && std::isfinite(down);
-        grad[a] = (up - down) / (2 * e);
-      }
-      double norm = 0;
-      for (int a = 0; a < sd; ++a) norm += grad[a] * grad[a];
-      norm = std::sqrt(norm);
-      // Steps of 1/8 of the shortest edge along the gradient, halved up to 4 times; at a kink of
-      // the measures (a minimum over corners: both sides of every axis lower the score) the
-      // gradient says nothing, and the axis and diagonal directions are tried instead.
-      double gain;
-      bool moved = false;
-      for (int dir = -1; dir < 27 && !moved; ++dir) {
-        double u[3] = {0, 0, 0};
-        if (dir < 0) {
-          if (!defined || !(norm > 0)) continue;
-          for (int a = 0; a < sd; ++a) u[a] = grad[a] / norm;
-        } else if (!direction(dir, sd, u)) {
-          continue;
-        }
-        for (double s = h / 8; s >= h / 128 && !moved; s *= 0.5) {
-          for (int a = 0; a < sd; ++a) trial[a] = x[a] + s * u[a];
-          moved = judge.try_position(v, trial, true, &gain);
-        }
-      }
+      const bool moved = climb_group(mesh, &judge, &v, 1);
+      stuck[v] = !moved;
       kept_in_pass += moved;
     }
-    // Then the edges between two movable vertices, both ends translated together: a vertex
-    // whose every move alone breaks a guarantee may still move with a neighbour (the copies of
-    // one vertex in two extruded layers keep their prism right while it changes shape).
-    for (const auto& e : edges) {
-      const double h = std::min(judge.shortest(e[0]), judge.shortest(e[1]));
-      if (!(h > 0) || !std::isfinite(h)) continue;
-      double x[6] = {0, 0, 0, 0, 0, 0}, trial[6], gain;
-      for (int j = 0; j < 2; ++j)
-        for (int a = 0; a < sd; ++a) x[j * sd + a] = mesh->vertex(e[j])[a];
-      bool moved = false;
-      for (int dir = 0; dir < 27 && !moved; ++dir) {
-        double u[3];
-        if (!direction(dir, sd, u)) continue;
-        for (double s = h / 8; s >= h / 128 && !moved; s *= 0.5) {
-          for (int j = 0; j < 2; ++j)
-            for (int a = 0; a < sd; ++a) trial[j * sd + a] = x[j * sd + a] + s * u[a];
-          moved = judge.try_positions(e.data(), 2, trial, true, &gain);
-        }
-      }
-      kept_in_pass += moved;
+    // Then the edges between two vertices that could not move alone, both ends translated
+    // together (the copies of one vertex in two extruded layers keep their prism right).
+    for (std::size_t k = 0; k < edges.size() && judge.measured() < budget; ++k) {
+      const int vs[2] = {edges[k][0], edges[k][1]};
+      if (!stuck[vs[0]] || !stuck[vs[1]]) continue;
+      if (climb_group(mesh, &judge, vs, 2)) ++kept_in_pass, stuck[vs[0]] = stuck[vs[1]] = 0;
     }
     kept += kept_in_pass;
     if (kept_in_pass == 0) break;

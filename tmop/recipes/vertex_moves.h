@@ -16,6 +16,7 @@
 #ifndef TMOP_RECIPES_VERTEX_MOVES_H_
 #define TMOP_RECIPES_VERTEX_MOVES_H_
 
+#include <cstdint>
 #include <vector>
 
 #include "tmop/mesh/mesh.h"
@@ -39,11 +40,14 @@ int accept_vertex_moves(Mesh* mesh, const std::vector<double>& target,
 
 // Where the solve's moves do not help (every vertex's move lowers the score), moves each
 // `movable` vertex uphill on the guaranteed measures of its cells instead: a step along the
-// central-difference gradient of their score (1/8 of its shortest edge, halved up to 4 times),
-// kept under the same rules. At most `passes` sweeps. Returns the number of moves kept.
+// central-difference gradient of their score (1/8, 1/32, 1/128 of its shortest edge), else along
+// the axis and diagonal directions, kept under the same rules; then the edges both of whose
+// vertices could not move alone, translated together (a prism between two moved layers keeps
+// its right angles only when both copies of its vertex move). At most `passes` sweeps, and no
+// new sweep or vertex once `budget` cells have been measured. Returns the number of moves kept.
 int climb_vertex_measures(Mesh* mesh, const std::vector<char>& movable,
                           const GuaranteeBaseline& baseline, const GuaranteeOptions& guarantees,
-                          int passes, GuaranteeValues* values);
+                          int passes, std::int64_t budget, GuaranteeValues* values);
 
 // The sum over the cells in a guarantee group of their guaranteed-mean measures (mean ratio,
 // scaled Jacobian, corner mean ratio, det J ratio): which of two results that keep every
