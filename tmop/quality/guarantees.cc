@@ -157,7 +157,6 @@ GuaranteeValues guarantee_values(const Mesh& mesh, int threads) {
 }
 
 void measure_guarantee_cell(const Mesh& mesh, int c, bool planar, GuaranteeValues* values) {
-  if (cell_dim(mesh.cell_types[c]) != mesh.dim()) return;
   QualityOptions options;
   options.threads = 1;
   measure_row(mesh, c, planar ? kZUp : nullptr, options, values);

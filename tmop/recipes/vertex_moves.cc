@@ -96,6 +96,7 @@ class MoveJudge {
         values_(values),
         cells_(vertex_to_cells(*mesh)),
         planar_(is_planar_2d(*mesh)),
+        d_(mesh->dim()),
         g_(make_groups(baseline, *values)) {}
 
   // Vertex v at x (space_dim coordinates): when every guarantee holds and the score rises by
@@ -107,7 +108,7 @@ class MoveJudge {
 
   // The same for n vertices moved together (x: n x space_dim coordinates).
   bool try_positions(const int* vs, int n, const double* x, bool keep, double* gain) {
-    const int sd = mesh_->space_dim, d = mesh_->dim();
+    const int sd = mesh_->space_dim, d = d_;
     from_.assign(static_cast<std::size_t>(n) * sd, 0);
     cells_touched_.clear();
     for (int j = 0; j < n; ++j) {
@@ -190,6 +191,7 @@ class MoveJudge {
   GuaranteeValues* values_;
   Adjacency cells_;
   bool planar_;
+  int d_;  // the mesh's dimension (Mesh::dim() is O(cells))
   Groups g_;
   std::vector<std::array<double, kNumGuaranteeMeasures>> rows_;
   std::vector<std::uint8_t> flags_;
