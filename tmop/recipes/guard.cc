@@ -56,8 +56,42 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
   const double input_score =
       guarantee_score(baseline, baseline.input) + options.guarantees.tolerance;
   double best_score = input_score;
-  VertexMoveOptions moves;
-  const bool surface = mesh->space_dim != mesh->dim();
+  std::vector<double> first_solved;  // the first round's result, when it broke a guarantee
+  // When the rounds would end with the input or out of rounds: from the best repaired result
+  // (or the input), the first round's moves kept vertex by vertex where they keep every
+  // guarantee, and the vertices whose move was not kept moved uphill on the measures
+  // (vertex_moves.h). Where the violators are most of the mesh (pripyrtet's wedges and
+  // pyramids), putting them back gives the input back. Leaves mesh->coords to the caller.
+  auto repair_by_vertices = [&]() {
+    if (first_solved.empty()) return;
+    mesh->coords = best.empty() ? original : best;
+    GuaranteeValues kept = best.empty() ? baseline.input : guarantee_values(*mesh, options.threads);
+    // Whole moves only where a vertex may slide (a part of its move leaves its curve or
+    // surface): the boundary, or every vertex of a surface mesh; those do not climb either.
+    VertexMoveOptions moves;
+    moves.whole_only = mesh->space_dim != mesh->dim() ? std::vector<char>(mesh->num_vertices(), 1)
+                                                      : boundary_vertex_mask(*mesh);
+    int changed =
+        accept_vertex_moves(mesh, first_solved, baseline, options.guarantees, moves, &kept);
+    std::vector<char> climb(mesh->num_vertices(), 0);
+    int climbers = 0;
+    for (int v = 0; v < mesh->num_vertices(); ++v) {
+      if (free_at_start[v] == 0 || moves.whole_only[v]) continue;
+      for (int a = 0; a < mesh->space_dim && !climb[v]; ++a) {
+        const std::size_t i = static_cast<std::size_t>(v) * mesh->space_dim + a;
+        climb[v] = mesh->coords[i] != first_solved[i];
+      }
+      climbers += climb[v];
+    }
+    // Bounded work: about a second plus 16 cell measures per cell.
+    const std::int64_t budget = 1000000 + 16 * static_cast<std::int64_t>(mesh->num_cells());
+    if (climbers > 0)
+      changed += climb_vertex_measures(mesh, climb, baseline, options.guarantees, 4, budget, &kept);
+    if (changed > 0) {
+      const double score = guarantee_score(baseline, kept);
+      if (score > std::max(best_score, input_score)) best = mesh->coords, best_score = score;
+    }
+  };
   for (int round = 0;; ++round) {
     Status s = solve(fixed, weight, round);
     if (options.progress.cancelled()) return Status::Cancelled("guard: cancelled");
@@ -80,12 +114,11 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
     const std::vector<int> bad = guard_violators(baseline, values, g);
     if (bad.empty()) {
       // Rounds that ended by holding every vertex give the input back: an earlier round's
-      // repaired result keeps the guarantees and some of the gain (kept too when it scores
-      // higher than this round's result).
-      if (!best.empty() &&
-          (mesh->coords == original || guarantee_score(baseline, values) < best_score)) {
-        mesh->coords = best;
-        note("guard: an earlier round's repaired result kept");
+      // repaired result keeps the guarantees and some of the gain.
+      if (mesh->coords == original) {
+        repair_by_vertices();
+        mesh->coords = best.empty() ? original : best;
+        if (!best.empty()) note("guard: an earlier round's repaired result kept");
       }
       return Status::Ok();
     }
@@ -94,41 +127,10 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       // cells (a type mean that fell by 2e-4 on a 1,015-hex mesh), where holding the cells
       // and solving again moves the losses to their neighbours.
       const std::vector<double> solved = mesh->coords;
+      if (first_solved.empty()) first_solved = solved;
       GuaranteeValues reverted = values;
       if (revert_violators(mesh, original, baseline, options, 8, &reverted)) {
         const double score = guarantee_score(baseline, reverted);
-        if (score > std::max(best_score, input_score)) best = mesh->coords, best_score = score;
-      }
-      // Then the good part of the move, vertex by vertex (vertex_moves.h), from the best result
-      // so far (or the input): where the violators are most of the mesh (pripyrtet's wedges and
-      // pyramids), putting them back gives the input back.
-      mesh->coords = best.empty() ? original : best;
-      GuaranteeValues kept =
-          best.empty() ? baseline.input : guarantee_values(*mesh, options.threads);
-      // Whole moves only where a vertex may slide (a part of its move leaves its curve or
-      // surface): the boundary, or every vertex of a surface mesh; those do not climb either.
-      if (moves.whole_only.empty())
-        moves.whole_only =
-            surface ? std::vector<char>(mesh->num_vertices(), 1) : boundary_vertex_mask(*mesh);
-      GuaranteeOptions g1 = options.guarantees;
-      int changed = accept_vertex_moves(mesh, solved, baseline, g1, moves, &kept);
-      // The vertices whose move was not kept (interior, free): uphill on the measures instead.
-      std::vector<char> climb(mesh->num_vertices(), 0);
-      int climbers = 0;
-      for (int v = 0; v < mesh->num_vertices(); ++v) {
-        if (free_at_start[v] == 0 || moves.whole_only[v]) continue;
-        for (int a = 0; a < mesh->space_dim && !climb[v]; ++a) {
-          const std::size_t i = static_cast<std::size_t>(v) * mesh->space_dim + a;
-          climb[v] = mesh->coords[i] != solved[i];
-        }
-        climbers += climb[v];
-      }
-      // Bounded work: ~1 s plus 16 measures per cell.
-      const std::int64_t budget = 1000000 + 16 * static_cast<std::int64_t>(mesh->num_cells());
-      if (climbers > 0)
-        changed += climb_vertex_measures(mesh, climb, baseline, g1, 4, budget, &kept);
-      if (changed > 0) {
-        const double score = guarantee_score(baseline, kept);
         if (score > std::max(best_score, input_score)) best = mesh->coords, best_score = score;
       }
       mesh->coords = solved;
@@ -174,6 +176,8 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       if (!warm) mesh->coords = original;
       continue;
     }
+    const std::vector<double> last = mesh->coords;
+    repair_by_vertices();
     if (!best.empty()) {
       mesh->coords = best;
       note("guard: " + std::to_string(bad.size()) +
@@ -181,7 +185,6 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       return Status::Ok();
     }
     // Out of rounds: step back towards the input along the last result's displacement.
-    const std::vector<double> last = mesh->coords;
     for (double t = 0.5; t >= 1.0 / 64; t *= 0.5) {
       for (std::size_t i = 0; i < last.size(); ++i)
         mesh->coords[i] = original[i] + t * (last[i] - original[i]);
