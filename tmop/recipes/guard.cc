@@ -57,26 +57,34 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       guarantee_score(baseline, baseline.input) + options.guarantees.tolerance;
   double best_score = input_score;
   std::vector<double> first_solved;  // the first round's result, when it broke a guarantee
-  // When the rounds would end with the input or out of rounds: from the best repaired result
-  // (or the input), the first round's moves kept vertex by vertex where they keep every
-  // guarantee, and the vertices whose move was not kept moved uphill on the measures
-  // (vertex_moves.h). Where the violators are most of the mesh (pripyrtet's wedges and
-  // pyramids), putting them back gives the input back. Leaves mesh->coords to the caller.
-  auto repair_by_vertices = [&]() {
+  // The first round's moves kept vertex by vertex where they keep every guarantee, and the
+  // vertices whose move was not kept moved uphill on the measures (vertex_moves.h), from
+  // `start_values`' mesh (mesh->coords; null: from the best repaired result, or the input).
+  // Only the `held` vertices move (empty: all). Where the violators are most of the mesh
+  // (pripyrtet's wedges and pyramids), putting them back gives the input back. A result that
+  // scores higher than the start and the best so far becomes the best; mesh->coords is left at
+  // the start.
+  auto repair_by_vertices = [&](const std::vector<char>& held,
+                                const GuaranteeValues* start_values) {
     if (first_solved.empty()) return;
-    mesh->coords = best.empty() ? original : best;
-    GuaranteeValues kept = best.empty() ? baseline.input : guarantee_values(*mesh, options.threads);
+    if (!start_values) mesh->coords = best.empty() ? original : best;
+    GuaranteeValues kept = start_values   ? *start_values
+                           : best.empty() ? baseline.input
+                                          : guarantee_values(*mesh, options.threads);
+    const double start_score = guarantee_score(baseline, kept);
+    const std::vector<double> start = mesh->coords;
     // Whole moves only where a vertex may slide (a part of its move leaves its curve or
     // surface): the boundary, or every vertex of a surface mesh; those do not climb either.
     VertexMoveOptions moves;
     moves.whole_only = mesh->space_dim != mesh->dim() ? std::vector<char>(mesh->num_vertices(), 1)
                                                       : boundary_vertex_mask(*mesh);
+    moves.only = held;
     int changed =
         accept_vertex_moves(mesh, first_solved, baseline, options.guarantees, moves, &kept);
     std::vector<char> climb(mesh->num_vertices(), 0);
     int climbers = 0;
     for (int v = 0; v < mesh->num_vertices(); ++v) {
-      if (free_at_start[v] == 0 || moves.whole_only[v]) continue;
+      if (free_at_start[v] == 0 || moves.whole_only[v] || (!held.empty() && !held[v])) continue;
       for (int a = 0; a < mesh->space_dim && !climb[v]; ++a) {
         const std::size_t i = static_cast<std::size_t>(v) * mesh->space_dim + a;
         climb[v] = mesh->coords[i] != first_solved[i];
@@ -87,10 +95,10 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
     const std::int64_t budget = 1000000 + 16 * static_cast<std::int64_t>(mesh->num_cells());
     if (climbers > 0)
       changed += climb_vertex_measures(mesh, climb, baseline, options.guarantees, 4, budget, &kept);
-    if (changed > 0) {
-      const double score = guarantee_score(baseline, kept);
-      if (score > std::max(best_score, input_score)) best = mesh->coords, best_score = score;
-    }
+    const double score = guarantee_score(baseline, kept);
+    if (changed > 0 && score > std::max({best_score, input_score, start_score}))
+      best = mesh->coords, best_score = score;
+    mesh->coords = start;
   };
   for (int round = 0;; ++round) {
     Status s = solve(fixed, weight, round);
@@ -116,9 +124,19 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       // Rounds that ended by holding every vertex give the input back: an earlier round's
       // repaired result keeps the guarantees and some of the gain.
       if (mesh->coords == original) {
-        repair_by_vertices();
+        repair_by_vertices({}, nullptr);
         mesh->coords = best.empty() ? original : best;
         if (!best.empty()) note("guard: an earlier round's repaired result kept");
+      } else if (round > 0) {
+        // The held vertices take the good part of their first-round move (vertex_moves.h).
+        std::vector<char> held(fixed.size(), 0);
+        for (std::size_t v = 0; v < fixed.size(); ++v) held[v] = fixed[v] && free_at_start[v];
+        const std::vector<double> before = best;
+        repair_by_vertices(held, &values);
+        if (best != before) {
+          mesh->coords = best;
+          note("guard: the held vertices kept the good part of their moves");
+        }
       }
       return Status::Ok();
     }
@@ -177,7 +195,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       continue;
     }
     const std::vector<double> last = mesh->coords;
-    repair_by_vertices();
+    repair_by_vertices({}, nullptr);
     if (!best.empty()) {
       mesh->coords = best;
       note("guard: " + std::to_string(bad.size()) +

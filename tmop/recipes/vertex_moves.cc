@@ -212,6 +212,7 @@ int accept_vertex_moves(Mesh* mesh, const std::vector<double>& target,
   for (int pass = 0; pass < options.passes; ++pass) {
     int kept_in_pass = 0;
     for (int v = 0; v < mesh->num_vertices(); ++v) {
+      if (!options.only.empty() && !options.only[v]) continue;
       const double* x = mesh->vertex(v);
       const double* y = &target[static_cast<std::size_t>(v) * sd];
       bool moves = false;

@@ -29,6 +29,8 @@ struct VertexMoveOptions {
   // Per vertex: 1 = only the whole move (a sliding boundary vertex: a part of its move leaves
   // its curve or surface). Empty: every vertex may take part of its move.
   std::vector<char> whole_only;
+  // Per vertex: 1 = may move. Empty: every vertex.
+  std::vector<char> only;
 };
 
 // *mesh keeps every guarantee of `baseline` (checked with `guarantees`: means, slivers,
