@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <string>
+#include <utility>
 
 #include "tmop/mesh/topology.h"
 #include "tmop/recipes/vertex_moves.h"
@@ -37,6 +39,44 @@ bool revert_violators(Mesh* mesh, const std::vector<double>& original,
   return guard_violators(baseline, *values, g).empty();
 }
 
+// The vertex-by-vertex repair (vertex_moves.h), from mesh->coords (guarantee values `kept`):
+// the moves towards `target` (the first round's result) kept one vertex at a time where they keep
+// every guarantee, then the interior free vertices whose move was not kept moved uphill on the
+// measures. Only the `held` vertices move (empty: all). Where the violators are most of the mesh
+// (pripyrtet's wedges and pyramids), putting them back gives the input back; this keeps the good
+// part of the move. Returns the result's score and its coordinates in *out (-inf when nothing
+// moved); mesh->coords is restored.
+double repair_by_vertices(Mesh* mesh, const std::vector<double>& target,
+                          const std::vector<char>& free_at_start, const std::vector<char>& held,
+                          const GuaranteeBaseline& baseline, const GuardOptions& options,
+                          GuaranteeValues kept, std::vector<double>* out) {
+  const std::vector<double> start = mesh->coords;
+  // Whole moves only where a vertex may slide (a part of its move leaves its curve or surface):
+  // the boundary, or every vertex of a surface mesh; those do not climb either.
+  VertexMoveOptions moves;
+  moves.whole_only = mesh->space_dim != mesh->dim() ? std::vector<char>(mesh->num_vertices(), 1)
+                                                    : boundary_vertex_mask(*mesh);
+  moves.only = held;
+  int changed = accept_vertex_moves(mesh, target, baseline, options.guarantees, moves, &kept);
+  std::vector<char> climb(mesh->num_vertices(), 0);
+  int climbers = 0;
+  for (int v = 0; v < mesh->num_vertices(); ++v) {
+    if (free_at_start[v] == 0 || moves.whole_only[v] || (!held.empty() && !held[v])) continue;
+    for (int a = 0; a < mesh->space_dim && !climb[v]; ++a) {
+      const std::size_t i = static_cast<std::size_t>(v) * mesh->space_dim + a;
+      climb[v] = mesh->coords[i] != target[i];
+    }
+    climbers += climb[v];
+  }
+  // Bounded work: about a second plus 16 cell measures per cell.
+  const std::int64_t budget = 1000000 + 16 * static_cast<std::int64_t>(mesh->num_cells());
+  if (climbers > 0)
+    changed += climb_vertex_measures(mesh, climb, baseline, options.guarantees, 4, budget, &kept);
+  *out = mesh->coords;
+  mesh->coords = start;
+  return changed > 0 ? guarantee_score(baseline, kept) : -std::numeric_limits<double>::infinity();
+}
+
 }  // namespace
 
 Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardOptions& options,
@@ -57,48 +97,22 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       guarantee_score(baseline, baseline.input) + options.guarantees.tolerance;
   double best_score = input_score;
   std::vector<double> first_solved;  // the first round's result, when it broke a guarantee
-  // The first round's moves kept vertex by vertex where they keep every guarantee, and the
-  // vertices whose move was not kept moved uphill on the measures (vertex_moves.h), from
-  // `start_values`' mesh (mesh->coords; null: from the best repaired result, or the input).
-  // Only the `held` vertices move (empty: all). Where the violators are most of the mesh
-  // (pripyrtet's wedges and pyramids), putting them back gives the input back. A result that
-  // scores higher than the start and the best so far becomes the best; mesh->coords is left at
-  // the start.
-  auto repair_by_vertices = [&](const std::vector<char>& held,
-                                const GuaranteeValues* start_values) {
+  // The vertex-by-vertex repair (repair_by_vertices) from `start_values`' mesh (mesh->coords;
+  // null: from the best repaired result, or the input), moving only the `held` vertices (empty:
+  // all). A result that scores higher than its start and the best so far becomes the best;
+  // mesh->coords is left at the start.
+  auto repair = [&](const std::vector<char>& held, const GuaranteeValues* start_values) {
     if (first_solved.empty()) return;
     if (!start_values) mesh->coords = best.empty() ? original : best;
     GuaranteeValues kept = start_values   ? *start_values
                            : best.empty() ? baseline.input
                                           : guarantee_values(*mesh, options.threads);
     const double start_score = guarantee_score(baseline, kept);
-    const std::vector<double> start = mesh->coords;
-    // Whole moves only where a vertex may slide (a part of its move leaves its curve or
-    // surface): the boundary, or every vertex of a surface mesh; those do not climb either.
-    VertexMoveOptions moves;
-    moves.whole_only = mesh->space_dim != mesh->dim() ? std::vector<char>(mesh->num_vertices(), 1)
-                                                      : boundary_vertex_mask(*mesh);
-    moves.only = held;
-    int changed =
-        accept_vertex_moves(mesh, first_solved, baseline, options.guarantees, moves, &kept);
-    std::vector<char> climb(mesh->num_vertices(), 0);
-    int climbers = 0;
-    for (int v = 0; v < mesh->num_vertices(); ++v) {
-      if (free_at_start[v] == 0 || moves.whole_only[v] || (!held.empty() && !held[v])) continue;
-      for (int a = 0; a < mesh->space_dim && !climb[v]; ++a) {
-        const std::size_t i = static_cast<std::size_t>(v) * mesh->space_dim + a;
-        climb[v] = mesh->coords[i] != first_solved[i];
-      }
-      climbers += climb[v];
-    }
-    // Bounded work: about a second plus 16 cell measures per cell.
-    const std::int64_t budget = 1000000 + 16 * static_cast<std::int64_t>(mesh->num_cells());
-    if (climbers > 0)
-      changed += climb_vertex_measures(mesh, climb, baseline, options.guarantees, 4, budget, &kept);
-    const double score = guarantee_score(baseline, kept);
-    if (changed > 0 && score > std::max({best_score, input_score, start_score}))
-      best = mesh->coords, best_score = score;
-    mesh->coords = start;
+    std::vector<double> out;
+    const double score = repair_by_vertices(mesh, first_solved, free_at_start, held, baseline,
+                                            options, std::move(kept), &out);
+    if (score > std::max({best_score, input_score, start_score}))
+      best = std::move(out), best_score = score;
   };
   for (int round = 0;; ++round) {
     Status s = solve(fixed, weight, round);
@@ -124,7 +138,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       // Rounds that ended by holding every vertex give the input back: an earlier round's
       // repaired result keeps the guarantees and some of the gain.
       if (mesh->coords == original) {
-        repair_by_vertices({}, nullptr);
+        repair({}, nullptr);
         mesh->coords = best.empty() ? original : best;
         if (!best.empty()) note("guard: an earlier round's repaired result kept");
       } else if (round > 0) {
@@ -132,7 +146,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
         std::vector<char> held(fixed.size(), 0);
         for (std::size_t v = 0; v < fixed.size(); ++v) held[v] = fixed[v] && free_at_start[v];
         const std::vector<double> before = best;
-        repair_by_vertices(held, &values);
+        repair(held, &values);
         if (best != before) {
           mesh->coords = best;
           note("guard: the held vertices kept the good part of their moves");
@@ -195,7 +209,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
       continue;
     }
     const std::vector<double> last = mesh->coords;
-    repair_by_vertices({}, nullptr);
+    repair({}, nullptr);
     if (!best.empty()) {
       mesh->coords = best;
       note("guard: " + std::to_string(bad.size()) +
