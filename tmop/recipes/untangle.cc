@@ -166,6 +166,7 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
     stage.untangle_max_rounds = options.max_rounds;
     stage.untangle_round_iterations = options.round_iterations;
     stage.untangle_patience = options.patience;
+    stage.untangle_spread_rounds = options.spread_rounds;
     stage.untangle_sigma_min = options.sigma_min;
     TermSpec term;
     try {
