@@ -246,7 +246,6 @@ bool step_back_until_kept(Mesh* mesh, const QuadraticBaseline& input, const Shap
     apply(t);
     ++*passes;
     const int left = quadratic_violators(*mesh, input, options, violates, first);
-    std::fprintf(stderr, "pass %d: %d added, %d left (%s)\n", *passes, added, left, first->c_str());
     if (left == 0) return true;
   }
   return false;
