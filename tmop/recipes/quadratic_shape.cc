@@ -223,6 +223,8 @@ void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeo
   st.terms.push_back(shape);
   st.terms.push_back(size);
   const std::vector<double> start = mesh->coords;
+  std::vector<double> stepped;  // the first round's result stepped back, if it kept every guarantee
+  std::string stepped_note;
   for (int round = 0; round <= options.guard_rounds; ++round) {
     st.name = round == 0
                   ? "shape (curved nodes)"
@@ -241,11 +243,19 @@ void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeo
     std::vector<char> violates;
     std::string first;
     const int violators = quadratic_violators(*mesh, input, options, &violates, &first);
-    if (violators == 0) return;
     StageResult& last = result->stages.back();
-    {
-      // This round's result with the violators' curved nodes back where the stage began, again
-      // on the cells that then break a guarantee (no solve): the rest of the gain is kept.
+    if (violators == 0) {
+      // Rounds that ended by holding every node give the start back: a stepped-back result
+      // of an earlier round instead.
+      if (mesh->coords == start && !stepped.empty()) {
+        mesh->coords = stepped;
+        last.termination += "; quadratic guard: " + stepped_note;
+      }
+      return;
+    }
+    if (stepped.empty()) {
+      // This round's result with the violators' curved nodes stepped back towards where the
+      // stage began (quadratic_guard.h, no solve), kept for when the rounds give nothing.
       const std::vector<double> solved = mesh->coords;
       std::vector<char> unknown(fixed.size());
       for (std::size_t v = 0; v < fixed.size(); ++v) unknown[v] = !fixed[v];
@@ -262,10 +272,10 @@ void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeo
       if (step_back_until_kept(mesh, input, options, unknown, apply, kMaxStepBackPasses, &bad,
                                &passes, &why, &held) &&
           mesh->coords != start) {
-        last.termination += "; quadratic guard: " + std::to_string(violators) + " cells (" + first +
-                            ") stepped back towards their start in " + std::to_string(passes) +
-                            " passes";
-        return;
+        stepped = mesh->coords;
+        stepped_note = "round " + std::to_string(round) + "'s " + std::to_string(violators) +
+                       " cells (" + first + ") stepped back towards their start in " +
+                       std::to_string(passes) + " passes kept";
       }
       mesh->coords = solved;
     }
@@ -281,7 +291,9 @@ void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeo
     mesh->coords = start;
     if (newly_fixed == 0 || round == options.guard_rounds) {
       last.termination += "; quadratic guard: " + std::to_string(violators) +
-                          " cells would get worse (" + first + "): curved nodes kept";
+                          " cells would get worse (" + first + "): ";
+      if (!stepped.empty()) mesh->coords = stepped;
+      last.termination += stepped.empty() ? "curved nodes kept" : stepped_note;
       return;
     }
     last.termination +=
