@@ -29,8 +29,11 @@
 // corner stage solves again from the input, at most guard_rounds + 2 times. Where a mean fell,
 // the cells whose own measure fell most are held until they give back the shortfall; cells next
 // to a cell whose input is below the round's worst are held only when the others cannot give
-// back half of it (holding them lowers the worst again). If a round limit is reached the input
-// is kept. With guard_worst false only validity is enforced.
+// back half of it (holding them lowers the worst again). Each round's violators are first stepped
+// back towards the round's start over rings of neighbours without a solve (quadratic_guard.h);
+// when that keeps every guarantee the next round starts there with them held. If a round limit
+// is reached the last state that kept every guarantee (at first the input) is kept. With
+// guard_worst false only validity is enforced.
 //
 // Then a second stage moves only the interior nodes that are already curved (off the corners'
 // interpolation: curved by the input or by untangling; straight edges stay fixed, boundary
