@@ -13,8 +13,11 @@ namespace tmop {
 namespace {
 
 // The rings of vertices over which the step-back repair blends from held (ring 0) to the
-// stage's result (this ring and beyond).
-constexpr int kStepBackRings = 3;
+// stage's result (this ring and beyond). t3 at order 2 (the first solve's tet10 corner mean
+// ratio mean 0.800, 44 cells out of the dihedral range), after the step back: 1 ring (the held
+// vertices put back whole) 0.739 in 9 passes, 3 rings 0.746 in 7, 5 rings 0.759 in 6, 8 rings
+// 0.768 in 1, 12 rings 0.758 in 1.
+constexpr int kStepBackRings = 8;
 
 bool is_quadratic_element(const Mesh& mesh, int c, int d) {
   return mesh.is_element(c, d) && cell_info(mesh.cell_type(c)).order == 2;

@@ -45,17 +45,18 @@ int quadratic_violators(const Mesh& mesh, const QuadraticBaseline& input,
                         const ShapeOptions& options, std::vector<char>* violates,
                         std::string* first);
 
-// The repair without a solve, a per-vertex step back towards the start: every vertex v with
-// `unknown[v]` has a fraction t[v] (1 at first) of its move from the start to the stage's result;
-// apply(t) puts the mesh there (and places whatever depends on those vertices). While cells break
-// a guarantee, the unknowns among their nodes halve their fraction (below 1/16: 0, the start
-// itself), and the cells are found again (a node stepped back changes its neighbours too). A
-// whole cell put back at once makes the neighbours that moved towards it pay: on t3 at order 2
-// the cascade went on for 9 passes and kept 12,153 of 19,312 improved tets; halving keeps
-// them. The fractions only fall and reach 0 in 5 halvings, so the repair ends: true when no cell
-// breaks a guarantee (the caller checks that the mesh is not the start itself), false when
-// max_passes are spent or every violator is at its start. *violates: the mesh's violators on entry;
-// *passes: passes made.
+// The repair without a solve, a step back towards the start blended over rings of neighbours:
+// the unknowns (`unknown[v]`: the stage's free vertices) among the nodes of the cells that break
+// a guarantee are held (*held), vertices k rings of cells away from a held one get the fraction
+// t = k / 8 of their move from the start to the stage's result, the others all of it (t = 1);
+// apply(t) puts the mesh there (and places whatever depends on those vertices). The cells are
+// then found again (a vertex stepped back changes its neighbours) and their unknowns join the
+// held set, until no cell breaks a guarantee (true; the caller checks that the mesh is not the
+// start itself) or no unknown is added or max_passes are spent (false). The held set only grows,
+// so the repair ends. Putting the held vertices back whole (no blend) makes the neighbours that
+// moved towards them pay: on t3 at order 2 that cascaded for 9 passes and lowered the tet10
+// corner mean ratio mean from the solve's 0.800 to 0.739; blended over 8 rings: 1 pass, 0.768.
+// *violates: the mesh's violators on entry; *passes: the passes made.
 bool step_back_until_kept(Mesh* mesh, const QuadraticBaseline& input, const ShapeOptions& options,
                           const std::vector<char>& unknown,
                           const std::function<void(const std::vector<double>& t)>& apply,
