@@ -162,7 +162,8 @@ Mesh corner_mesh_without(const Mesh& mesh, const std::vector<char>& drop) {
 // fixed. Terms: the caller's shape metric and target at every sample point (the pointwise mean
 // ratio) and the size barrier toward the straight-sided cell's Jacobian (det J toward its
 // constant: the det J ratio), so curvature the cells do not need is relaxed. The same guard as
-// the corner stage; when its rounds run out the nodes stay as they were.
+// the corner stage; when its rounds run out (or end by holding every node) the first round's
+// result stepped back is kept, if it kept every guarantee, else the nodes stay as they were.
 void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeometry* geometry,
                         const std::vector<char>& boundary, const QuadraticBaseline& input,
                         RecipeResult* result) {
