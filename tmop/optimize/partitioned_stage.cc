@@ -59,21 +59,18 @@ Pieces pieces_of(const Mesh& mesh, const VertexCells& vc, const std::vector<int>
   return pieces;
 }
 
-// Marks the vertices within `rings` rings of elements around the vertices whose coordinates
-// differ from `before`.
+// Marks the vertices within `rings` rings of elements around the vertices that moved after
+// phase run `since` (moved_at: per vertex, the last phase run that changed its coordinates).
 std::vector<char> near_moved(const Mesh& mesh, const VertexCells& vc,
-                             const std::vector<double>& before, int rings) {
-  const int n = mesh.num_vertices(), sd = mesh.space_dim;
+                             const std::vector<int>& moved_at, int since, int rings) {
+  const int n = mesh.num_vertices();
   std::vector<char> mark(n, 0);
   std::vector<int> front;
   for (int v = 0; v < n; ++v)
-    for (int a = 0; a < sd; ++a)
-      if (mesh.coords[static_cast<std::size_t>(v) * sd + a] !=
-          before[static_cast<std::size_t>(v) * sd + a]) {
-        mark[v] = 1;
-        front.push_back(v);
-        break;
-      }
+    if (moved_at[v] > since) {
+      mark[v] = 1;
+      front.push_back(v);
+    }
   for (int r = 0; r < rings; ++r) {
     std::vector<int> next;
     for (int v : front)
@@ -115,10 +112,11 @@ struct PhaseTotals {
 // Solves the pieces of one phase side by side on `threads` workers (largest first); each reads
 // the coordinates of the phase's start. Outcomes are summed in piece order: the totals do not
 // depend on the threads.
+// moved_at (when given): the vertices the phase changed get `stamp`.
 Status run_phase(Mesh* mesh, const StageContext& ctx, const IdealTable& table,
                  const VertexCells& vc, const CellPoints& cp, const Pieces& pieces, int threads,
                  double seconds, std::vector<PartScratch>* scratch, StageResult* result,
-                 PhaseTotals* totals) {
+                 PhaseTotals* totals, std::vector<int>* moved_at, int stamp) {
   const std::vector<double> start = mesh->coords;
   std::vector<PartOutcome> outcomes(pieces.size());
   std::vector<int> order(pieces.size());
@@ -157,6 +155,14 @@ Status run_phase(Mesh* mesh, const StageContext& ctx, const IdealTable& table,
   if (exchange) {
     const Status s = exchange->share(pieces, owner, mesh->space_dim, &outcomes, &mesh->coords);
     if (!s.ok()) return s;
+  }
+  if (moved_at) {
+    const int sd = mesh->space_dim;
+    for (const std::vector<int>& p : pieces)
+      for (int v : p)
+        if (!std::equal(mesh->vertex(v), mesh->vertex(v) + sd,
+                        &start[static_cast<std::size_t>(v) * sd]))
+          (*moved_at)[v] = stamp;
   }
   *totals = PhaseTotals();
   totals->parts = static_cast<int>(pieces.size());
@@ -279,9 +285,11 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
     rec.inverted = -1;
     result->history.push_back(rec);
   }
-  // The coordinates as each phase left them: a later sweep re-solves only the vertices near
-  // those that moved since (the rest of its parts is where that phase left it at its optimum).
-  std::vector<std::vector<double>> after(3);
+  // Which vertices each phase run changed (a counter per run), and each phase's last run: a
+  // later sweep re-solves only near what moved since (one int per vertex, not a copy of the
+  // coordinates per phase).
+  std::vector<int> moved_at(so.sweep_rings > 0 ? mesh->num_vertices() : 0, 0);
+  int runs = 0, last_run[3] = {-1, -1, -1};
   bool out_of_time = false;
   // Time limits and cancels are decided by every process together (part_exchange.h).
   const auto agreed = [&so](bool local) {
@@ -301,8 +309,9 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
       if (phases[ph]->empty()) continue;
       Pieces restricted;
       const Pieces* pieces = phases[ph];
-      if (!after[ph].empty() && so.sweep_rings > 0) {
-        restricted = restrict_pieces(*pieces, near_moved(*mesh, vc, after[ph], so.sweep_rings));
+      if (last_run[ph] >= 0 && so.sweep_rings > 0) {
+        restricted =
+            restrict_pieces(*pieces, near_moved(*mesh, vc, moved_at, last_run[ph], so.sweep_rings));
         pieces = &restricted;
       }
       PhaseTotals totals;
@@ -312,11 +321,12 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
         break;
       }
       if (!pieces->empty()) {
+        ++runs;
         s = run_phase(mesh, ctx, table, vc, cp, *pieces, threads, so.max_seconds - elapsed,
-                      &scratch, result, &totals);
+                      &scratch, result, &totals, so.sweep_rings > 0 ? &moved_at : nullptr, runs);
         if (!s.ok()) return s;
       }
-      if (so.sweep_rings > 0) after[ph] = mesh->coords;
+      last_run[ph] = runs;
       sweep_decrease += totals.initial_cost - totals.final_cost;
       IterationRecord rec;
       rec.iteration = ++record;

@@ -84,7 +84,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
   const std::vector<double> original = mesh->coords;
   std::vector<char> free_at_start(fixed.size());
   for (std::size_t v = 0; v < fixed.size(); ++v) free_at_start[v] = !fixed[v];
-  std::vector<double> weight(mesh->num_cells(), 1.0);
+  std::vector<double> weight;  // empty: 1 for every cell, until a soft round raises some
   result->guard_held_cells = 0;
   auto note = [&](const std::string& text) {
     if (!result->stages.empty()) result->stages.back().termination += "; " + text;
@@ -176,6 +176,7 @@ Status guarded_solve(Mesh* mesh, const GuaranteeBaseline& baseline, const GuardO
     }
     result->guard_held_cells = static_cast<int>(bad.size());
     if (round < options.soft_rounds) {
+      if (weight.empty()) weight.assign(mesh->num_cells(), 1.0);
       for (int c : bad) weight[c] *= options.soft_factor;
       note("guard: " + std::to_string(bad.size()) +
            " cells would break a guarantee, their shape weighted up");

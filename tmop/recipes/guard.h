@@ -51,7 +51,8 @@ struct GuardOptions {
 // solve(fixed, cell_weight, round): optimizes *mesh in place from its current coordinates (the
 // input's, every round) with `fixed` vertices held, appending its stages to result->stages. `fixed`
 // starts as the caller's flags (one per vertex). `baseline` is the input's (guarantee_baseline of
-// *mesh as given). cell_weight (one per cell, 1 unless soft rounds raised it) multiplies the
+// *mesh as given). cell_weight (one per cell, 1 unless soft rounds raised it; empty: 1 for every
+// cell, the rounds before any soft round) multiplies the
 // recipe's shape term at the cell's points. Fills result->guard_held_cells and the last stage's
 // termination note. Returns the first failing solve's status (mesh restored to the input).
 using GuardSolve = std::function<Status(const std::vector<char>& fixed,

@@ -203,6 +203,8 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
       shape.fixed = options.fixed;
       shape.extra_points = extra;
       shape.geometry = geometry;
+      // The caller's baseline is of the input: it serves only if untangling moved nothing.
+      if (mesh->coords != input_coords) shape.input_baseline = nullptr;
       RecipeResult shape_result;
       s = improve_shape(mesh, shape, &shape_result);
       if (!s.ok()) return s;

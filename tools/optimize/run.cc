@@ -135,7 +135,9 @@ int run(const RecipeOptions& o, Inputs* in) {
   if (!s.ok()) return fail(1, FLAGS_input + ": " + s.message());
   if (signalled()) return interrupted();
   RecipeResult result;
-  s = run_recipe(FLAGS_recipe, &mesh, o, &result);
+  RecipeOptions with_baseline = o;  // the guard reuses the tool's baseline of the input
+  if (check_guarantee) with_baseline.input_baseline = &baseline;
+  s = run_recipe(FLAGS_recipe, &mesh, with_baseline, &result);
   // A cancelled run (SIGINT / SIGTERM raised the cancel flag) writes nothing: one line, exit 130.
   // From here on a signal takes the immediate path: a temporary file being written is removed.
   if (tmop::stop_cancelling_on_signal() || s.cancelled()) return interrupted();
