@@ -10,6 +10,9 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # CI runs as root on 2 cores: both flags are needed there and harmless elsewhere.
 # -q: without it mpirun adds its own multi-line banner to a failed run's one line.
+# Containers (CI) often forbid the cross-process memory copy OpenMPI's shared-memory transport
+# uses for larger messages ("Read -1, expected ..., errno = 1"): copy through the shared buffer.
+export OMPI_MCA_btl_vader_single_copy_mechanism=none
 mpi=("$mpiexec" -q --oversubscribe --allow-run-as-root -np "$np")
 fail() { echo "FAIL: $*"; exit 1; }
 
