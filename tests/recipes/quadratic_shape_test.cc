@@ -22,6 +22,7 @@
 #include "tmop/element/shape.h"
 #include "tmop/io/mesh_io.h"
 #include "tmop/mesh/topology.h"
+#include "tmop/quality/guarantees.h"
 #include "tmop/quality/quality_report.h"
 #include "tmop/recipes/improve_shape.h"
 #include "tmop/recipes/untangle.h"
@@ -317,6 +318,27 @@ TEST(QuadraticShape, BoxTet10StaysStraightAndNeverWorse) {
   const auto a = summarize(mesh).at(CellType::kTet10), b = summarize(input).at(CellType::kTet10);
   EXPECT_GT(a.mean[0], b.mean[0] + 1e-4) << "the corner mesh should improve";
   EXPECT_GT(a.worst[0], b.worst[0]) << "the worst corner tet should improve";
+}
+
+// tmop_optimize hands its guarantee baseline of the quadratic input to the recipe
+// (RecipeOptions::input_baseline): the result must be the one computed without it. The corner
+// mesh's guard must not take it (it is of the quadratic cells: with it every corner cell
+// "broke a guarantee" and t3 at order 2 came back unchanged).
+TEST(QuadraticShape, TheCallersBaselineOfTheQuadraticInputChangesNothing) {
+  if (!have_gmsh()) GTEST_SKIP() << "gmsh not installed";
+  Mesh input;
+  ASSERT_TRUE(gmsh_order2("box", kBox, 3, &input));
+  const GuaranteeBaseline baseline = guarantee_baseline(input, 1);
+  Mesh own = input, given = input;
+  UntangleOptions opt;
+  opt.solver.threads = 1;
+  opt.shape.solver.threads = 1;
+  RecipeResult a, b;
+  ASSERT_TRUE(untangle(&own, opt, &a).ok());
+  opt.shape.input_baseline = &baseline;
+  ASSERT_TRUE(untangle(&given, opt, &b).ok());
+  EXPECT_NE(own.coords, input.coords) << "the corner mesh should move";
+  EXPECT_EQ(own.coords, given.coords);
 }
 
 TEST(QuadraticShape, Quad9AndHex27StayStraightAndNeverWorse) {

@@ -114,8 +114,7 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
   // The guard's baseline: the caller's when it has one of this mesh, else computed here.
   const bool own_baseline =
       options.guard_worst &&
-      !(options.input_baseline &&
-        static_cast<int>(options.input_baseline->cell_type.size()) == mesh->num_cells());
+      !(options.input_baseline && options.input_baseline->cell_type == mesh->cell_types);
   GuaranteeBaseline computed;
   side_by_side(
       threads != 1,

@@ -388,6 +388,7 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
   ShapeOptions lo = options;
   lo.extra_points = SampleSet();
   lo.geometry = geometry;
+  lo.input_baseline = nullptr;  // the caller's is of the quadratic mesh, not of its corners
   if (options.target.reference) {
     reference_linear = corner_mesh_without(*options.target.reference, drop);
     lo.target.reference = &reference_linear;
