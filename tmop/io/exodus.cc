@@ -27,6 +27,7 @@
 
 #include "tmop/io/atomic_file.h"
 #include "tmop/io/formats.h"
+#include "tmop/io/netcdf_header.h"
 #include "tmop/io/node_order.h"
 
 #ifdef TMOP_WITH_EXODUS
@@ -146,6 +147,7 @@ void read_exodus(const std::string& path, Mesh* mesh) {
   const std::uint64_t size = static_cast<std::uint64_t>(st.st_size);
   int cpu_ws = 8, io_ws = 0;
   float version = 0;
+  check_exodus_file(path);  // a crafted header must not make libnetcdf allocate (netcdf_header.h)
   ExoFile f;
   f.id = ex_open(path.c_str(), EX_READ, &cpu_ws, &io_ws, &version);
   if (f.id < 0) throw Error(path + ": not a readable Exodus II file (netCDF)");
