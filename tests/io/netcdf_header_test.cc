@@ -140,8 +140,11 @@ TEST(NetcdfHeader, RefusesABadRecordDimensionAndType) {
   EXPECT_NE(refusal(write_file("type.exo", type.b)).find("bad type 7"), std::string::npos);
 }
 
-TEST(NetcdfHeader, HdfSignaturePassesToLibhdf5) {
-  EXPECT_EQ(refusal(write_file("h.exo", std::string("\x89HDF\r\n\x1a\n", 8) + "xxxx")), "");
+// netCDF-4 files are refused before libhdf5 sees them (netcdf_header.h says why).
+TEST(NetcdfHeader, RefusesNetcdf4) {
+  const std::string m = refusal(write_file("h.exo", std::string("\x89HDF\r\n\x1a\n", 8) + "xxxx"));
+  EXPECT_NE(m.find("a netCDF-4 (HDF5) Exodus II file, not read"), std::string::npos) << m;
+  EXPECT_NE(m.find("nccopy -k 64-bit-offset"), std::string::npos) << m;
 }
 
 #ifdef TMOP_TEST_WITH_EXODUS
@@ -194,6 +197,18 @@ TEST(NetcdfHeader, ReadMeshRefusesACutExodusFile) {
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find("cut.exo: netCDF header, byte "), std::string::npos) << s.message();
   EXPECT_NE(s.message().find("outside the data part"), std::string::npos) << s.message();
+}
+
+// Fuzz findings: a variable name and an element type with control bytes went into the message.
+TEST(NetcdfHeader, MessagesQuoteFileBytesPrintable) {
+  const std::string dir = std::string(TMOP_SOURCE_DIR) + "/tests/fuzz/regressions/exo/";
+  for (const char* name :
+       {"control_char_var_name.exo", "control_char_elem_type.exo", "hdf5_invalid_free.exo"}) {
+    Mesh mesh;
+    const Status s = read_mesh(dir + name, &mesh);
+    ASSERT_FALSE(s.ok()) << name;
+    for (unsigned char c : s.message()) EXPECT_TRUE(c >= 0x20 && c != 0x7f) << s.message();
+  }
 }
 
 #endif  // TMOP_TEST_WITH_EXODUS

@@ -29,6 +29,7 @@
 #include "tmop/io/formats.h"
 #include "tmop/io/netcdf_header.h"
 #include "tmop/io/node_order.h"
+#include "tmop/io/scanner.h"  // printable
 
 #ifdef TMOP_WITH_EXODUS
 #include <exodusII.h>
@@ -188,7 +189,7 @@ void read_exodus(const std::string& path, Mesh* mesh) {
     CellType t;
     if (!exo_type(type, npe, &t))
       throw Error(path + ": element block " + std::to_string(id) + ": unsupported element type '" +
-                  std::string(type) + "' with " + std::to_string(npe) + " nodes");
+                  printable(type) + "' with " + std::to_string(npe) + " nodes");
     if (count < 0 || static_cast<std::uint64_t>(count) * npe * 4 > size)
       throw Error(path + ": element block " + std::to_string(id) + " declares " +
                   std::to_string(count) + " elements, more than the file holds");

@@ -15,6 +15,7 @@
 #include <limits>
 
 #include "tmop/core/status.h"
+#include "tmop/io/scanner.h"  // printable
 
 namespace tmop {
 namespace io {
@@ -45,6 +46,9 @@ std::uint64_t type_size(int type) {
       return 0;
   }
 }
+
+// A name from the file in a message: quoted, control bytes escaped (io::printable).
+std::string q(const std::string& name) { return "'" + printable(name) + "'"; }
 
 std::uint64_t pad4(std::uint64_t n) { return n + (4 - n % 4) % 4; }
 
@@ -161,7 +165,7 @@ class HeaderReader {
       const std::uint64_t at = pos_;
       d.length = count();
       if (d.length == 0) {
-        if (record) fail(at, "a second record dimension '" + d.name + "'");
+        if (record) fail(at, "a second record dimension " + q(d.name));
         record = true;
       }
       h_->dims.push_back(d);
@@ -178,7 +182,7 @@ class HeaderReader {
       a.count = count();
       std::uint64_t b = 0;
       if (!mul(a.count, type_size(a.type), left(), &b))
-        fail(at, "attribute '" + a.name + "' declares " + std::to_string(a.count) +
+        fail(at, "attribute " + q(a.name) + " declares " + std::to_string(a.count) +
                      " values, more than the " + std::to_string(left()) +
                      " bytes left in the file hold");
       skip(pad4(b), "attribute values");
@@ -196,14 +200,14 @@ class HeaderReader {
       std::uint64_t at = pos_;
       const std::uint64_t nd = count();
       if (nd > kMaxVarDims || nd > left() / word)
-        fail(at, "variable '" + v.name + "' has " + std::to_string(nd) + " dimensions");
+        fail(at, "variable " + q(v.name) + " has " + std::to_string(nd) + " dimensions");
       for (std::uint64_t k = 0; k < nd; ++k) {
         at = pos_;
         const std::uint64_t id = count();
         if (id >= h_->dims.size())
-          fail(at, "variable '" + v.name + "': no dimension " + std::to_string(id));
+          fail(at, "variable " + q(v.name) + ": no dimension " + std::to_string(id));
         if (h_->dims[id].length == 0) {
-          if (k != 0) fail(at, "variable '" + v.name + "': the record dimension is not its first");
+          if (k != 0) fail(at, "variable " + q(v.name) + ": the record dimension is not its first");
           v.record = true;
         }
         v.dims.push_back(id);
@@ -216,7 +220,7 @@ class HeaderReader {
       std::uint64_t bytes = type_size(v.type);
       for (std::size_t k = v.record ? 1 : 0; k < v.dims.size(); ++k)
         if (!mul(bytes, h_->dims[v.dims[k]].length, size_, &bytes))
-          fail(at, "variable '" + v.name + "' is larger than the " + std::to_string(size_) +
+          fail(at, "variable " + q(v.name) + " is larger than the " + std::to_string(size_) +
                        "-byte file");
       v.bytes = bytes;
       h_->vars.push_back(v);
@@ -244,7 +248,7 @@ class HeaderReader {
         span = 0;
       }
       if (v.begin < end || v.begin > size_ || span > size_ - v.begin)
-        fail(end, "variable '" + v.name + "': data at bytes " + std::to_string(v.begin) + ".." +
+        fail(end, "variable " + q(v.name) + ": data at bytes " + std::to_string(v.begin) + ".." +
                       std::to_string(v.begin + span) + ", outside the data part " +
                       std::to_string(end) + ".." + std::to_string(size_) + " of the file");
     }
@@ -271,16 +275,16 @@ void expect_var(const std::string& path, const NetcdfHeader& h, const NetcdfVar&
   if (!ok) {
     std::string want;
     for (const std::string& n : names) want += (want.empty() ? "" : ", ") + n;
-    throw Error(path + ": Exodus II variable '" + v.name + "' is not defined over (" + want + ")");
+    throw Error(path + ": Exodus II variable " + q(v.name) + " is not defined over (" + want + ")");
   }
   if (std::find(types.begin(), types.end(), v.type) == types.end())
-    throw Error(path + ": Exodus II variable '" + v.name + "' has type " + std::to_string(v.type));
+    throw Error(path + ": Exodus II variable " + q(v.name) + " has type " + std::to_string(v.type));
 }
 
 void expect_text(const std::string& path, const std::string& owner, const NetcdfAttr& a,
                  std::uint64_t max) {
   if (a.type != kNcChar || a.count > max)
-    throw Error(path + ": Exodus II attribute " + owner + a.name + " is not text of at most " +
+    throw Error(path + ": Exodus II attribute " + q(owner + a.name) + " is not text of at most " +
                 std::to_string(max) + " characters");
 }
 
@@ -328,7 +332,10 @@ void check_exodus_file(const std::string& path) {
     f.read(reinterpret_cast<char*>(head), sizeof head);
   }
   static const unsigned char kHdf5[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
-  if (std::equal(head, head + 8, kHdf5)) return;  // netCDF-4: libhdf5 reads it
+  if (std::equal(head, head + 8, kHdf5))
+    throw Error(path +
+                ": a netCDF-4 (HDF5) Exodus II file, not read: libhdf5 1.10 can crash on damaged "
+                "HDF5 metadata (convert it: nccopy -k 64-bit-offset FILE OUT.exo)");
   NetcdfHeader h;
   read_netcdf_header(path, &h);
   check_exodus_layout(path, h);

@@ -17,15 +17,16 @@
 //     - numrecs is not STREAMING (0xFFFFFFFF: libnetcdf does not write it).
 //     Failure: Error "PATH: netCDF header, byte N: WHAT" (one line).
 //   check_exodus_file(path): what read_exodus calls before ex_open. A file that starts with the
-//     HDF5 signature (netCDF-4, "\x89HDF\r\n\x1a\n") passes unchecked: it is parsed by libhdf5,
-//     whose allocations follow its own object headers, and read_exodus then bounds every count
-//     it allocates by the file size (docs/fuzzing.md). Anything else must be a classic file that
-//     read_netcdf_header accepts and whose Exodus variables have the shapes libexodusii assumes
-//     when it reads them into buffers sized from dimensions: coordx/coordy/coordz (num_nodes),
-//     coord (num_dim, num_nodes), eb_prop1 and eb_status (num_el_blk), eb_names (num_el_blk,
-//     len_name), connectK (num_el_in_blkK, num_nod_per_elK) of an integer type, the connectK
-//     attribute elem_type and the global title as text of at most 33 / 81 bytes (MAX_STR_LENGTH,
-//     MAX_LINE_LENGTH and the NUL).
+//     HDF5 signature (netCDF-4, "\x89HDF\r\n\x1a\n") is refused: libhdf5 1.10.8 frees an invalid
+//     pointer on a damaged group of such a file within a few thousand fuzz inputs
+//     (tests/fuzz/regressions/exo/hdf5_invalid_free.exo), and tmop cannot check HDF5 metadata
+//     before libhdf5 does; `nccopy -k 64-bit-offset` converts one. Anything else must be a
+//     classic file that read_netcdf_header accepts and whose Exodus variables have the shapes
+//     libexodusii assumes when it reads them into buffers sized from dimensions: coordx/coordy/
+//     coordz (num_nodes), coord (num_dim, num_nodes), eb_prop1 and eb_status (num_el_blk),
+//     eb_names (num_el_blk, len_name), connectK (num_el_in_blkK, num_nod_per_elK) of an integer
+//     type, the connectK attribute elem_type and the global title as text of at most 33 / 81
+//     bytes (MAX_STR_LENGTH, MAX_LINE_LENGTH and the NUL).
 //     Failure: Error "PATH: ..." (one line).
 #ifndef TMOP_IO_NETCDF_HEADER_H_
 #define TMOP_IO_NETCDF_HEADER_H_

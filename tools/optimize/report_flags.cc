@@ -13,6 +13,14 @@
 namespace tmop_tools {
 namespace {
 
+// Text from the report in a message: at most 40 bytes, control bytes and DEL as '?'.
+std::string printable(const std::string& s) {
+  std::string out = s.substr(0, 40);
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  return out;
+}
+
 // A minimal reader of the one object apply_report_flags needs: {"name": "value", ...} with
 // JSON string escapes (what flags_json writes). Throws the message on malformed text.
 class FlatObjectReader {
@@ -64,19 +72,25 @@ class FlatObjectReader {
           c = '\b';
         else if (c == 'f')
           c = '\f';
-        else if (c == 'u') {
-          if (i_ + 4 > t_.size()) fail("bad \\u escape");
-          const unsigned long u = std::strtoul(t_.substr(i_, 4).c_str(), nullptr, 16);
-          i_ += 4;
-          if (u >= 0x80) fail("non-ASCII \\u escape");
-          c = static_cast<char>(u);
-        }
+        else if (c == 'u')
+          c = unicode_escape();
+        else if (c != '"' && c != '\\' && c != '/')
+          fail(std::string("bad escape \\") + printable(std::string(1, c)));
       }
       s += c;
     }
     if (i_ >= t_.size()) fail("unterminated string");
     ++i_;
     return s;
+  }
+  // The 4 hex digits after \u, below 0x80 (what run_report writes).
+  char unicode_escape() {
+    if (i_ + 4 > t_.size() || t_.find_first_not_of("0123456789abcdefABCDEF", i_) < i_ + 4)
+      fail("bad \\u escape (4 hex digits)");
+    const unsigned long u = std::strtoul(t_.substr(i_, 4).c_str(), nullptr, 16);
+    i_ += 4;
+    if (u >= 0x80) fail("non-ASCII \\u escape");
+    return static_cast<char>(u);
   }
   const std::string& t_;
   std::size_t i_;
@@ -113,7 +127,7 @@ tmop::Status apply_report_flags(const std::string& path, const std::string& flag
       continue;
     if (gflags::SetCommandLineOption(info.name.c_str(), it->second.c_str()).empty())
       return tmop::Status::Failure(path + ": flag --" + info.name + ": bad value '" +
-                                   it->second.substr(0, 40) + "'");
+                                   printable(it->second) + "'");
   }
   return tmop::Status::Ok();
 }
