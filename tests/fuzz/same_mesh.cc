@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <numeric>
@@ -19,12 +21,22 @@ double coord(const Mesh& m, int v, int k) {
   return k < m.space_dim ? m.coords[static_cast<std::size_t>(v) * m.space_dim + k] : m.plane_z;
 }
 
-// The value as the format keeps it, as bits (a total order; NaN equals itself).
-std::uint64_t kept(double x, const Holds& h) {
-  if (h.float32) x = static_cast<double>(static_cast<float>(x));
+std::uint64_t bits(double x) {  // a total order in which NaN equals itself
   std::uint64_t b;
   std::memcpy(&b, &x, sizeof b);
   return b;
+}
+
+// The value the format keeps of x (written, read back) and the value read (taken as it is).
+std::uint64_t kept(double x, const Holds& h, bool written) {
+  if (!written) return bits(x);
+  if (h.float32) x = static_cast<double>(static_cast<float>(x));
+  if (h.fixed_decimals > 0) {
+    char buf[400];
+    std::snprintf(buf, sizeof buf, "%.*f", h.fixed_decimals, x);
+    x = std::strtod(buf, nullptr);
+  }
+  return bits(x);
 }
 
 int num_coords(const Mesh& a, const Holds& h) { return a.space_dim == 2 && !h.plane_z ? 2 : 3; }
@@ -32,12 +44,12 @@ int num_coords(const Mesh& a, const Holds& h) { return a.space_dim == 2 && !h.pl
 using Key = std::vector<std::uint64_t>;
 
 // (type, coordinates of the nodes in order), OpenMesh polygons rotated to their least corner.
-Key cell_key(const Mesh& m, int c, int nc, const Holds& h) {
+Key cell_key(const Mesh& m, int c, int nc, const Holds& h, bool written) {
   const CellType t = m.cell_types[c];
   const int n = tmop::cell_num_nodes(t);
   std::vector<Key> nodes(n);
   for (int i = 0; i < n; ++i)
-    for (int k = 0; k < nc; ++k) nodes[i].push_back(kept(coord(m, m.cell(c)[i], k), h));
+    for (int k = 0; k < nc; ++k) nodes[i].push_back(kept(coord(m, m.cell(c)[i], k), h, written));
   if (h.rotate_polygons && (t == CellType::kTri3 || t == CellType::kQuad4))
     std::rotate(nodes.begin(), std::min_element(nodes.begin(), nodes.end()), nodes.end());
   Key key = {static_cast<std::uint64_t>(t)};
@@ -45,9 +57,9 @@ Key cell_key(const Mesh& m, int c, int nc, const Holds& h) {
   return key;
 }
 
-std::vector<Key> keys(const Mesh& m, int nc, const Holds& h) {
+std::vector<Key> keys(const Mesh& m, int nc, const Holds& h, bool written) {
   std::vector<Key> out;
-  for (int c = 0; c < m.num_cells(); ++c) out.push_back(cell_key(m, c, nc, h));
+  for (int c = 0; c < m.num_cells(); ++c) out.push_back(cell_key(m, c, nc, h, written));
   return out;
 }
 
@@ -101,6 +113,7 @@ Holds holds(const std::string& family, bool binary) {
     h.float32 = true;
     h.rotate_polygons = true;
   }
+  if (family == "obj") h.fixed_decimals = 17;
   if (family == "stl") {
     h.float32 = binary;
     h.vertices = false;
@@ -121,12 +134,12 @@ std::string mesh_difference(const Mesh& a, const Mesh& b, const Holds& h) {
     if (a.num_vertices() != b.num_vertices()) return "vertex counts differ";
     for (int v = 0; v < a.num_vertices(); ++v)
       for (int k = 0; k < nc; ++k)
-        if (kept(coord(a, v, k), h) != kept(coord(b, v, k), h))
+        if (kept(coord(a, v, k), h, true) != kept(coord(b, v, k), h, false))
           return "vertex " + std::to_string(v) + " coordinate " + std::to_string(k) + ": " +
                  std::to_string(coord(a, v, k)) + " -> " + std::to_string(coord(b, v, k));
   }
   if (a.num_cells() != b.num_cells()) return "cell counts differ";
-  const std::vector<Key> ka = keys(a, nc, h), kb = keys(b, nc, h);
+  const std::vector<Key> ka = keys(a, nc, h, true), kb = keys(b, nc, h, false);
   const std::vector<int> oa = order(ka), ob = order(kb);
   std::vector<std::pair<int, int>> match;
   for (std::size_t i = 0; i < oa.size(); ++i) {

@@ -186,6 +186,15 @@ TEST(NetcdfHeader, RefusesAnExodusVariableOverOtherDimensions) {
   EXPECT_EQ(s.message(), m);
 }
 
+// ex_open reads "version" into one float: a crafted array of 100 would overrun it.
+TEST(NetcdfHeader, RefusesAnExodusScalarAttributeOfManyValues) {
+  Cdf c;
+  c.u32(0).u32(0).u32(0).u32(0x0C).u32(1).name("version").u32(5).u32(100).raw(400);
+  c.u32(0).u32(0);
+  const std::string m = refusal(write_file("version.exo", c.b));
+  EXPECT_NE(m.find("Exodus II attribute 'version' is not one number"), std::string::npos) << m;
+}
+
 TEST(NetcdfHeader, ReadMeshRefusesACutExodusFile) {
   const std::string path = test::temp_dir() + "/m.exo";
   ASSERT_TRUE(write_mesh(path, two_blocks()).ok());

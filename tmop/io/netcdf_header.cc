@@ -291,8 +291,21 @@ void expect_text(const std::string& path, const std::string& owner, const Netcdf
 // The shapes libexodusii assumes when it reads a variable into a buffer sized from dimensions.
 void check_exodus_layout(const std::string& path, const NetcdfHeader& h) {
   const std::vector<int> ints = {kNcInt, kNcInt64}, reals = {kNcFloat, kNcDouble};
-  for (const NetcdfAttr& a : h.attrs)
+  // ex_open and ex_inquire read these into one float or int each.
+  static const char* const kScalars[] = {"version",
+                                         "api_version",
+                                         "api version",
+                                         "floating_point_word_size",
+                                         "floating point word size",
+                                         "file_size",
+                                         "int64_status",
+                                         "maximum_name_length"};
+  for (const NetcdfAttr& a : h.attrs) {
     if (a.name == "title") expect_text(path, "", a, 81);  // MAX_LINE_LENGTH and the NUL
+    for (const char* n : kScalars)
+      if (a.name == n && (a.count != 1 || a.type == kNcChar))
+        throw Error(path + ": Exodus II attribute " + q(a.name) + " is not one number");
+  }
   for (const NetcdfVar& v : h.vars) {
     const std::string& n = v.name;
     if (n == "coordx" || n == "coordy" || n == "coordz") {
