@@ -17,10 +17,12 @@
 //     - numrecs is not STREAMING (0xFFFFFFFF: libnetcdf does not write it).
 //     Failure: Error "PATH: netCDF header, byte N: WHAT" (one line).
 //   check_exodus_file(path): what read_exodus calls before ex_open. A file that starts with the
-//     HDF5 signature (netCDF-4, "\x89HDF\r\n\x1a\n") is refused: libhdf5 1.10.8 frees an invalid
-//     pointer on a damaged group of such a file within a few thousand fuzz inputs
-//     (tests/fuzz/regressions/exo/hdf5_invalid_free.exo), and tmop cannot check HDF5 metadata
-//     before libhdf5 does; `nccopy -k 64-bit-offset` converts one. Anything else must be a
+//     HDF5 signature (netCDF-4, "\x89HDF\r\n\x1a\n"; meshio 5 writes these) is passed on
+//     unchecked: libhdf5 parses it as it parses every CGNS file, and read_exodus bounds every
+//     count it allocates from by the file size. That is the residual risk of the format: fuzzing
+//     found libhdf5 1.10.8 freeing an invalid pointer on a damaged group of such a file inside
+//     nc_open (tests/fuzz/unfixed/exo/hdf5_invalid_free.exo, docs/fuzzing.md), and the layout
+//     check below is not applied to netCDF-4 files. Anything else must be a
 //     classic file that read_netcdf_header accepts and whose Exodus variables have the shapes
 //     libexodusii assumes when it reads them into buffers sized from dimensions: coordx/coordy/
 //     coordz (num_nodes), coord (num_dim, num_nodes), eb_prop1 and eb_status (num_el_blk),
