@@ -102,6 +102,12 @@ void run_report(const std::string& in) {
 void run_one(const uint8_t* data, size_t size) {
   const std::string in = g_dir + "/in." + g_family;
   write_bytes(in, data, size);
+  // TMOP_FUZZ_KEEP=DIR keeps every input as DIR/N.FAMILY: damage done inside an uninstrumented
+  // library (libnetcdf, libhdf5) may show only inputs later, so the culprit is among these.
+  static const char* keep = std::getenv("TMOP_FUZZ_KEEP");
+  static long count = 0;
+  if (keep && *keep)
+    write_bytes(std::string(keep) + "/" + std::to_string(count++) + "." + g_family, data, size);
   if (g_family == "nodes") {
     std::vector<char> flags;
     const tmop::Status s = tmop::read_node_list(in, 64, &flags);

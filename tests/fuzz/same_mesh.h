@@ -9,7 +9,9 @@
 //     cells; boundary cells only for .su2 and .ugrid; none for .stl .obj .off .ply) and names (.msh
 //     .vtk .vtu .exo (up to 255 characters), .su2 boundary cells; not .cgns, whose rules on names
 //     are narrower: formats.md).
-//   mesh_difference(a, b, h): "" when b keeps what h says of a, else the first difference. The
+//   mesh_difference(a, b, h): "" when b keeps what h says of a, else the first difference. A 3D
+//     mesh read back flattened from a float32 format (its x, y rounded, finish_read then finds
+//     its z within 1e-12 of the extent) is compared in x, y, its z against that bound. The
 //     values of a are turned into what the format stores (float32, fixed decimals), those of b
 //     must equal them bit for bit.
 //     Vertices are compared index by index; cells as multisets keyed by (type, the coordinates of

@@ -193,6 +193,28 @@ TEST(NetcdfHeader, RefusesAnExodusScalarAttributeOfManyValues) {
   EXPECT_NE(m.find("Exodus II attribute 'version' is not one number"), std::string::npos) << m;
 }
 
+// Found with valgrind on fuzz inputs: without connect1's elem_type (or without connect1),
+// ex_get_block strcpy's an uninitialised buffer into the caller's type.
+TEST(NetcdfHeader, RefusesAnExodusBlockWithoutElemTypeOrConnectivity) {
+  const std::string path = test::temp_dir() + "/m.exo";
+  ASSERT_TRUE(write_mesh(path, two_blocks()).ok());
+  std::ifstream f(path, std::ios::binary);
+  const std::string good((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  std::string bytes = good;
+  std::size_t at = bytes.find("elem_type");
+  ASSERT_NE(at, std::string::npos);
+  bytes[at] = 'x';
+  std::string m = refusal(write_file("untyped.exo", bytes));
+  EXPECT_NE(m.find("variable 'connect1' has no elem_type attribute"), std::string::npos) << m;
+  bytes = good;
+  at = bytes.find("connect2");
+  ASSERT_NE(at, std::string::npos);
+  bytes[at] = 'x';
+  m = refusal(write_file("unconnected.exo", bytes));
+  EXPECT_NE(m.find("dimension 'num_el_in_blk2' has no variable 'connect2'"), std::string::npos)
+      << m;
+}
+
 TEST(NetcdfHeader, ReadMeshRefusesACutExodusFile) {
   const std::string path = test::temp_dir() + "/m.exo";
   ASSERT_TRUE(write_mesh(path, two_blocks()).ok());

@@ -320,10 +320,27 @@ void check_exodus_layout(const std::string& path, const NetcdfHeader& h) {
                n.find_first_not_of("0123456789", 7) == std::string::npos) {
       const std::string k = n.substr(7);
       expect_var(path, h, v, {"num_el_in_blk" + k, "num_nod_per_el" + k}, ints);
+      bool typed = false;
       for (const NetcdfAttr& a : v.attrs)
-        if (a.name == "elem_type") expect_text(path, n + ":", a, 33);  // MAX_STR_LENGTH, NUL
+        if (a.name == "elem_type") {
+          expect_text(path, n + ":", a, 33);  // MAX_STR_LENGTH, NUL
+          typed = a.count > 0;
+        }
+      // ex_get_block copies an uninitialised buffer as the type when it cannot read one.
+      if (!typed)
+        throw Error(path + ": Exodus II variable " + q(n) + " has no elem_type attribute");
     }
   }
+  // A block with elements (num_el_in_blkK) must have its connectK: ex_get_block's failure path
+  // is the same as above.
+  for (const NetcdfDim& d : h.dims)
+    if (d.name.compare(0, 13, "num_el_in_blk") == 0 && d.name.size() > 13 &&
+        d.name.find_first_not_of("0123456789", 13) == std::string::npos) {
+      const std::string conn = "connect" + d.name.substr(13);
+      if (std::none_of(h.vars.begin(), h.vars.end(),
+                       [&](const NetcdfVar& v) { return v.name == conn; }))
+        throw Error(path + ": Exodus II dimension " + q(d.name) + " has no variable " + q(conn));
+    }
   const NetcdfDim* blocks = find_dim(h, "num_el_blk");
   if (blocks && blocks->length > h.file_bytes)
     throw Error(path + ": Exodus II header declares " + std::to_string(blocks->length) +
