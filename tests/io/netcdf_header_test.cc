@@ -211,8 +211,19 @@ TEST(NetcdfHeader, RefusesAnExodusBlockWithoutElemTypeOrConnectivity) {
   ASSERT_NE(at, std::string::npos);
   bytes[at] = 'x';
   m = refusal(write_file("unconnected.exo", bytes));
-  EXPECT_NE(m.find("dimension 'num_el_in_blk2' has no variable 'connect2'"), std::string::npos)
-      << m;
+  EXPECT_NE(m.find("element block 2 has no connect2"), std::string::npos) << m;
+}
+
+// A null block (eb_status 0, no num_el_in_blk1 / connect1; python3-netcdf4 from sq_a.exo) reads;
+// an active block without them is refused (regressions/exo/active_block_without_dims.exo).
+TEST(NetcdfHeader, NullBlocksReadActiveBlocksNeedTheirConnectivity) {
+  const std::string dir = std::string(TMOP_SOURCE_DIR) + "/tests/fuzz/";
+  Mesh mesh;
+  const Status ok = read_mesh(dir + "corpus/exo/sq_null_block.exo", &mesh);
+  ASSERT_TRUE(ok.ok()) << ok.message();
+  EXPECT_EQ(mesh.num_cells(), 14);
+  const std::string m = refusal(dir + "regressions/exo/active_block_without_dims.exo");
+  EXPECT_NE(m.find("element block 1 has no num_el_in_blk1"), std::string::npos) << m;
 }
 
 TEST(NetcdfHeader, ReadMeshRefusesACutExodusFile) {

@@ -288,6 +288,27 @@ void expect_text(const std::string& path, const std::string& owner, const Netcdf
                 std::to_string(max) + " characters");
 }
 
+// The values of a 1-D integer variable (big-endian int or int64), empty when there is none.
+std::vector<std::int64_t> read_ints(const std::string& path, const NetcdfHeader& h,
+                                    const std::string& name) {
+  std::vector<std::int64_t> out;
+  for (const NetcdfVar& v : h.vars) {
+    if (v.name != name || v.record || (v.type != kNcInt && v.type != kNcInt64)) continue;
+    const std::uint64_t w = v.type == kNcInt ? 4 : 8;
+    std::string bytes(v.bytes, '\0');  // lies in the file: read_netcdf_header checked it
+    std::ifstream f(path, std::ios::binary);
+    f.seekg(static_cast<std::streamoff>(v.begin));
+    f.read(&bytes[0], static_cast<std::streamsize>(bytes.size()));
+    if (!f) throw Error(path + ": cannot read Exodus II variable " + q(name));
+    for (std::uint64_t i = 0; i + w <= bytes.size(); i += w) {
+      std::uint64_t u = 0;
+      for (std::uint64_t b = 0; b < w; ++b) u = (u << 8) | static_cast<unsigned char>(bytes[i + b]);
+      out.push_back(w == 4 ? static_cast<std::int32_t>(u) : static_cast<std::int64_t>(u));
+    }
+  }
+  return out;
+}
+
 // The shapes libexodusii assumes when it reads a variable into a buffer sized from dimensions.
 void check_exodus_layout(const std::string& path, const NetcdfHeader& h) {
   const std::vector<int> ints = {kNcInt, kNcInt64}, reals = {kNcFloat, kNcDouble};
@@ -331,15 +352,23 @@ void check_exodus_layout(const std::string& path, const NetcdfHeader& h) {
         throw Error(path + ": Exodus II variable " + q(n) + " has no elem_type attribute");
     }
   }
-  // A block with elements (num_el_in_blkK) must have its connectK: ex_get_block's failure path
-  // is the same as above.
-  for (const NetcdfDim& d : h.dims)
-    if (d.name.compare(0, 13, "num_el_in_blk") == 0 && d.name.size() > 13 &&
-        d.name.find_first_not_of("0123456789", 13) == std::string::npos) {
-      const std::string conn = "connect" + d.name.substr(13);
-      if (std::none_of(h.vars.begin(), h.vars.end(),
-                       [&](const NetcdfVar& v) { return v.name == conn; }))
-        throw Error(path + ": Exodus II dimension " + q(d.name) + " has no variable " + q(conn));
+  // An active block (eb_status not 0; every block when there is no eb_status) needs its
+  // num_el_in_blkK and connectK, and a block with elements its connectK: ex_get_block's failure
+  // path copies an uninitialised buffer as the type. (A null block, status 0, has neither.)
+  const NetcdfDim* nblocks = find_dim(h, "num_el_blk");
+  const std::vector<std::int64_t> status = read_ints(path, h, "eb_status");
+  auto has_var = [&](const std::string& n) {
+    return std::any_of(h.vars.begin(), h.vars.end(),
+                       [&](const NetcdfVar& v) { return v.name == n; });
+  };
+  if (nblocks)
+    for (std::uint64_t k = 1; k <= nblocks->length && k <= 100000; ++k) {
+      const std::string id = std::to_string(k);
+      const bool active = status.empty() || (k <= status.size() && status[k - 1] != 0);
+      const bool counted = find_dim(h, "num_el_in_blk" + id) != nullptr;
+      if ((active || counted) && (!counted || !has_var("connect" + id)))
+        throw Error(path + ": Exodus II element block " + id + " has no " +
+                    (counted ? "connect" : "num_el_in_blk") + id);
     }
   const NetcdfDim* blocks = find_dim(h, "num_el_blk");
   if (blocks && blocks->length > h.file_bytes)

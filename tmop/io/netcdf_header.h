@@ -27,13 +27,13 @@
 //     libexodusii assumes when it reads them into buffers sized from dimensions: coordx/coordy/
 //     coordz (num_nodes), coord (num_dim, num_nodes), eb_prop1 and eb_status (num_el_blk),
 //     eb_names (num_el_blk, len_name), connectK (num_el_in_blkK, num_nod_per_elK) of an integer
-//     type with an elem_type (ex_get_block copies an uninitialised buffer otherwise), a connectK
-//     for every num_el_in_blkK, elem_type as text of at most 32 bytes (MAX_STR_LENGTH:
-//     ex_get_block strcpy's it, and 33 without a NUL run past its buffer), the global title of
-//     at most 81 (MAX_LINE_LENGTH and the NUL), and the global attributes ex_open
-//     reads into one float or int (version, api_version, floating_point_word_size, file_size,
-//     int64_status, maximum_name_length; also the old spellings with spaces) one number each.
-//     Failure: Error "PATH: ..." (one line).
+//     type with an elem_type (ex_get_block copies an uninitialised buffer otherwise), a
+//     num_el_in_blkK and connectK for every active block K (eb_status not 0, read from the file),
+//     elem_type as text of at most 32 bytes (MAX_STR_LENGTH: ex_get_block strcpy's it, and 33
+//     without a NUL run past its buffer), the global title of at most 81 (MAX_LINE_LENGTH and the
+//     NUL), and the global attributes ex_open reads into one float or int (version, api_version,
+//     floating_point_word_size, file_size, int64_status, maximum_name_length; also the old
+//     spellings with spaces) one number each. Failure: Error "PATH: ..." (one line).
 #ifndef TMOP_IO_NETCDF_HEADER_H_
 #define TMOP_IO_NETCDF_HEADER_H_
 
