@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <fstream>
 #include <limits>
+#include <set>
 
 #include "tmop/core/status.h"
 #include "tmop/io/scanner.h"  // printable
@@ -355,25 +356,23 @@ void check_exodus_layout(const std::string& path, const NetcdfHeader& h) {
   // An active block (eb_status not 0; every block when there is no eb_status) needs its
   // num_el_in_blkK and connectK, and a block with elements its connectK: ex_get_block's failure
   // path copies an uninitialised buffer as the type. (A null block, status 0, has neither.)
-  const NetcdfDim* nblocks = find_dim(h, "num_el_blk");
-  const std::vector<std::int64_t> status = read_ints(path, h, "eb_status");
-  auto has_var = [&](const std::string& n) {
-    return std::any_of(h.vars.begin(), h.vars.end(),
-                       [&](const NetcdfVar& v) { return v.name == n; });
-  };
-  if (nblocks)
-    for (std::uint64_t k = 1; k <= nblocks->length && k <= 100000; ++k) {
-      const std::string id = std::to_string(k);
-      const bool active = status.empty() || (k <= status.size() && status[k - 1] != 0);
-      const bool counted = find_dim(h, "num_el_in_blk" + id) != nullptr;
-      if ((active || counted) && (!counted || !has_var("connect" + id)))
-        throw Error(path + ": Exodus II element block " + id + " has no " +
-                    (counted ? "connect" : "num_el_in_blk") + id);
-    }
   const NetcdfDim* blocks = find_dim(h, "num_el_blk");
-  if (blocks && blocks->length > h.file_bytes)
+  if (!blocks) return;
+  if (blocks->length > h.file_bytes / 4)
     throw Error(path + ": Exodus II header declares " + std::to_string(blocks->length) +
                 " element blocks, more than the file holds");
+  const std::vector<std::int64_t> status = read_ints(path, h, "eb_status");
+  std::set<std::string> names;
+  for (const NetcdfDim& d : h.dims) names.insert("dim " + d.name);
+  for (const NetcdfVar& v : h.vars) names.insert("var " + v.name);
+  for (std::uint64_t k = 1; k <= blocks->length; ++k) {
+    const std::string id = std::to_string(k);
+    const bool active = status.empty() || (k <= status.size() && status[k - 1] != 0);
+    const bool counted = names.count("dim num_el_in_blk" + id) > 0;
+    if ((active || counted) && (!counted || names.count("var connect" + id) == 0))
+      throw Error(path + ": Exodus II element block " + id + " has no " +
+                  (counted ? "connect" : "num_el_in_blk") + id);
+  }
 }
 
 }  // namespace
