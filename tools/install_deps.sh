@@ -4,7 +4,7 @@ set -euo pipefail
 pkgs=(build-essential cmake clang libclang-rt-14-dev pkg-config libceres-dev libeigen3-dev libgoogle-glog-dev libgflags-dev
       libopenmesh-dev libgtest-dev libgmock-dev libbenchmark-dev zlib1g-dev gmsh python3 python3-gmsh
       python3-meshio python3-numpy libexodusii-dev python3-netcdf4
-      libcgns-dev python3-h5py libmetis-dev)
+      libcgns-dev python3-h5py libmetis-dev python3-vtk9 libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

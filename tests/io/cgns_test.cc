@@ -50,13 +50,6 @@ TEST(Cgns, RegionSharedByTwoTypesKeepsIt) {
   EXPECT_EQ(back.cell_region[1], 5);
 }
 
-TEST(Cgns, RefusesHex27) {
-  const std::string dir = test::temp_dir();
-  const Status s = write_mesh(dir + "/q.cgns", test::make_mesh({CellType::kHex27}));
-  ASSERT_FALSE(s.ok());
-  EXPECT_NE(s.message().find("cannot write hex27 cells to CGNS"), std::string::npos) << s.message();
-}
-
 // meshio 5 cannot be the client: it reads only a section named GridElements holding tetrahedra,
 // and libcgns refuses the files its writer makes (no node labels). h5py reads tmop's file node by
 // node instead (mesh_dump.py cgns-h5, written from the SIDS layout, no libcgns).

@@ -77,7 +77,8 @@ Mesh straight_cells_mesh(const std::vector<CellType>& types) {
 std::string check_patran_node_order(const std::string& name, const std::string& kind) {
   const std::vector<CellType> types = {
       CellType::kTri6,  CellType::kQuad8,   CellType::kQuad9,     CellType::kTet10,
-      CellType::kHex20, CellType::kWedge15, CellType::kPyramid13, CellType::kPyramid14};
+      CellType::kHex20, CellType::kWedge15, CellType::kPyramid13, CellType::kPyramid14,
+      CellType::kHex27, CellType::kWedge18};
   const Mesh mesh = straight_cells_mesh(types);
   std::string failure = round_trip(mesh, {"r_" + name});
   if (!failure.empty()) return failure;

@@ -100,6 +100,56 @@ TEST_P(PartitionedStage, ShapeGuaranteesHoldInParts) {
   for (const GuaranteeViolation& v : broken) ADD_FAILURE() << v.message();
 }
 
+// A sliding boundary across the cuts (issue 20): boundary vertices of parts and of the cut
+// phases slide on their faces of the box (to round-off: the stage's frame is not bit-exact),
+// nothing inverts, and the parts reach most of the one-problem decrease. Not all of it: with a
+// sliding boundary this perturbed grid's optimum is a global shear of the whole mesh, which
+// parts with held halos approach slowly (tri3 40 x 40: 0.685 -> 0.0517 in 4 sweeps, 0.0037 in
+// 20, one problem 0.00046; docs/partitioning.md).
+TEST_P(PartitionedStage, SlidingBoundaryAcrossCuts) {
+  const Case k = GetParam();
+  // The Sizes cases measure the sweeps' restriction; there the gap grows (tri3 90 x 90: 86 % of
+  // the one-problem decrease).
+  if (k.part_size >= 2000) GTEST_SKIP() << "sliding is checked on the Types cases";
+  const Mesh start = input(k);
+  const auto slide = [&](Mesh* m, int part_size) {
+    ShapeOptions opt;
+    opt.solver.part_size = part_size;
+    opt.solver.threads = 2;
+    opt.slide = true;
+    RecipeResult r;
+    EXPECT_TRUE(improve_shape(m, opt, &r).ok());
+    return r;
+  };
+  Mesh whole = start, parts = start;
+  const RecipeResult one = slide(&whole, 0);
+  const RecipeResult many = slide(&parts, k.part_size);
+  ASSERT_FALSE(many.stages.empty());
+  const StageResult& a = one.stages.front();
+  const StageResult& b = many.stages.front();
+  EXPECT_GE(b.parts, 4) << b.termination;
+  EXPECT_EQ(b.inverted_after, 0);
+  EXPECT_GE(b.initial_objective - b.final_objective,
+            0.9 * (a.initial_objective - a.final_objective))
+      << a.initial_objective << " -> " << a.final_objective << " (one problem) vs "
+      << b.final_objective;
+  // The grid is the unit square / cube: a boundary coordinate that was 0 or 1 stays so, and
+  // some boundary vertex slid.
+  const std::vector<char> boundary = boundary_vertex_mask(start);
+  int slid = 0;
+  for (int v = 0; v < start.num_vertices(); ++v) {
+    if (!boundary[v]) continue;
+    for (int x = 0; x < start.space_dim; ++x) {
+      const double was = start.vertex(v)[x];
+      if (was == 0 || was == 1) {
+        EXPECT_NEAR(parts.vertex(v)[x], was, 1e-12) << "vertex " << v << " left its face";
+      }
+      slid += std::abs(parts.vertex(v)[x] - was) > 1e-9;
+    }
+  }
+  EXPECT_GT(slid, 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Types, PartitionedStage,
                          ::testing::Values(Case{CellType::kTri3, 40, 400},
                                            Case{CellType::kQuad4, 40, 200},

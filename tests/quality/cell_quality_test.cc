@@ -385,5 +385,31 @@ TEST(CellQuality, LowerDimensionalCellsAreNotMeasured) {
   EXPECT_TRUE(std::isnan(q.mean_ratio));
 }
 
+// The types without a Bernstein certificate (docs/quality.md, docs/formats.md: the serendipity
+// types, wedge18, hex27 and the pyramids) report `certified` = NaN, not 1 or 0, even with every
+// certificate option on; their validity is judged at their sample points. A valid cell (its
+// reference nodes) is not inverted, and a cell with two corners swapped is.
+TEST(CellQuality, TypesWithoutCertificateReportNaN) {
+  QualityOptions o;
+  o.bezier_certificate = true;
+  o.certify_all_types = true;
+  for (CellType type :
+       {CellType::kQuad8, CellType::kHex20, CellType::kWedge15, CellType::kWedge18,
+        CellType::kPyramid5, CellType::kPyramid13, CellType::kPyramid14, CellType::kHex27}) {
+    SCOPED_TRACE(cell_name(type));
+    const int n = cell_num_nodes(type);
+    std::vector<double> x(3 * n, 0.0);
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < cell_dim(type); ++k) x[3 * i + k] = reference_node(type, i)[k];
+    const CellQuality q = cell_quality(type, x.data(), nullptr, o);
+    EXPECT_TRUE(std::isnan(q.certified)) << q.certified;
+    EXPECT_FALSE(q.inverted);
+    std::swap_ranges(x.begin(), x.begin() + 3, x.begin() + 3);  // corners 0 and 1
+    const CellQuality bad = cell_quality(type, x.data(), nullptr, o);
+    EXPECT_TRUE(std::isnan(bad.certified));
+    EXPECT_TRUE(bad.inverted);
+  }
+}
+
 }  // namespace
 }  // namespace tmop

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <string>
 
+#include "run_command.h"
 #include "tmop/io/mesh_io.h"
 
 namespace tmop {
@@ -19,15 +20,7 @@ namespace {
 const std::string kPy = "/usr/bin/python3";
 const std::string kHelper = std::string(TMOP_SOURCE_DIR) + "/tests/io/names_check.py";
 
-int run(const std::string& cmd, std::string* out) {
-  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
-  if (!p) return -1;
-  char buf[4096];
-  std::size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out->append(buf, n);
-  const int status = pclose(p);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+int run(const std::string& cmd, std::string* out) { return testing_recipes::run_command(cmd, out); }
 
 bool have(const std::string& module) {
   std::string out;

@@ -17,9 +17,9 @@
 // Descriptor "tmop_region"; other names are not written.
 //
 // Types and node order (CGNS SIDS, "Unstructured Grid Element Numbering Conventions"): NODE,
-// BAR_2, BAR_3, TRI_3, TRI_6, QUAD_4, QUAD_9, TETRA_4, PYRA_5, PENTA_6, HEXA_8 in Gmsh's order;
-// TETRA_10 has its mid-edge nodes 9 and 10 (edges 2-4, 3-4) in VTK's order (node_order.h);
-// HEXA_27 is refused (its own face-node order, not checked here).
+// BAR_2/3, TRI_3/6, QUAD_4/8/9, TETRA_4/10, PYRA_5/13/14, PENTA_6/15/18, HEXA_8/20/27, with the
+// mid-edge, face and centre nodes in PATRAN's order (node_order.h: HEXA_27's faces and centre
+// differ from Exodus's).
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -67,7 +67,8 @@ const CgType kTypes[] = {
     {CGNS_ENUMV(PENTA_6), CellType::kWedge6},    {CGNS_ENUMV(HEXA_8), CellType::kHex8},
     {CGNS_ENUMV(QUAD_8), CellType::kQuad8},      {CGNS_ENUMV(HEXA_20), CellType::kHex20},
     {CGNS_ENUMV(PENTA_15), CellType::kWedge15},  {CGNS_ENUMV(PYRA_13), CellType::kPyramid13},
-    {CGNS_ENUMV(PYRA_14), CellType::kPyramid14},
+    {CGNS_ENUMV(PYRA_14), CellType::kPyramid14}, {CGNS_ENUMV(HEXA_27), CellType::kHex27},
+    {CGNS_ENUMV(PENTA_18), CellType::kWedge18},
 };
 
 bool from_cgns(int cg, CellType* t) {
@@ -82,7 +83,7 @@ bool to_cgns(CellType t, CGNS_ENUMT(ElementType_t) * cg) {
 }
 
 // The CGNS position of Gmsh node i (PATRAN's order, node_order.h).
-int cg_index(CellType t, int i) { return patran_index_of_gmsh_node(t, i); }
+int cg_index(CellType t, int i) { return patran_index_of_gmsh_node(t, i, PatranFormat::kCgns); }
 
 struct CgFile {
   int fn = -1;

@@ -10,14 +10,13 @@
 // to 255 characters (ex_set_max_name_length). Node sets, side sets and variables are not read
 // or written.
 //
-// Types and node order (Exodus II manual, "element types"): BAR2/BEAM2/TRUSS2 line2, BEAM3 (read
-// also BAR3, TRUSS3: meshio 5 knows only BEAM3) line3,
-// TRI/TRI3/TRISHELL/SHELL3 tri3, TRI6, QUAD/QUAD4/SHELL/SHELL4 quad4, QUAD9/SHELL9 quad9,
-// TETRA/TETRA4, TETRA10, PYRAMID/PYRAMID5, WEDGE/WEDGE6, HEX/HEX8 (the first name is written:
-// meshio 5 reads TETRA4 as an unknown "tetra4" and not WEDGE6 at all), all in Gmsh's order except
-// TETRA10, whose mid-edge nodes 9 and 10 (edges 1-4, 2-4 ... 1-based: 0-3, 1-3, 2-3) are Gmsh's
-// 7, 9, 8: the VTK order (node_order.h). HEX27 is refused (its face-node order differs from both
-// and is not checked here).
+// Types and node order (Exodus II manual, "element types"; Sandia's IOSS face tables for HEX27
+// and WEDGE18): BAR2/BEAM2/TRUSS2 line2, BEAM3 (read also BAR3, TRUSS3: meshio 5 knows only
+// BEAM3) line3, TRI/TRI3/TRISHELL/SHELL3 tri3, TRI6, QUAD/QUAD4/SHELL/SHELL4 quad4, QUAD8/SHELL8,
+// QUAD9/SHELL9, TETRA/TETRA4, TETRA10, PYRAMID/PYRAMID5/13/14, WEDGE/WEDGE6/15/18,
+// HEX/HEX8/20/27 (the first name is written: meshio 5 reads TETRA4 as an unknown "tetra4" and not
+// WEDGE6 at all; a base name takes its type from the node count). Mid-edge, face and centre nodes
+// in PATRAN's order (node_order.h).
 #include <algorithm>
 #include <cctype>
 #include <cstring>
@@ -72,6 +71,7 @@ const ExoType kTypes[] = {
     {"HEX8", CellType::kHex8},           {"QUAD8", CellType::kQuad8},
     {"HEX20", CellType::kHex20},         {"WEDGE15", CellType::kWedge15},
     {"PYRAMID13", CellType::kPyramid13}, {"PYRAMID14", CellType::kPyramid14},
+    {"HEX27", CellType::kHex27},         {"WEDGE18", CellType::kWedge18},
 };
 // Other names for the same types, accepted on read.
 const ExoType kAliases[] = {
@@ -92,6 +92,7 @@ const ExoType kAliases[] = {
     {"QUAD", CellType::kQuad9},        {"SHELL", CellType::kQuad9},
     {"PYRAMID", CellType::kPyramid13}, {"PYRAMID", CellType::kPyramid14},
     {"PYRA13", CellType::kPyramid13},  {"PYRA14", CellType::kPyramid14},
+    {"HEX", CellType::kHex27},         {"WEDGE", CellType::kWedge18},
 };
 
 bool exo_type(const std::string& name, int nodes, CellType* t) {
@@ -113,7 +114,7 @@ const char* exo_name(CellType t) {
 }
 
 // The Exodus position of Gmsh node i (PATRAN's order, node_order.h).
-int exo_index(CellType t, int i) { return patran_index_of_gmsh_node(t, i); }
+int exo_index(CellType t, int i) { return patran_index_of_gmsh_node(t, i, PatranFormat::kExodus); }
 
 // Closes the file on every path out of the reader and writer.
 struct ExoFile {

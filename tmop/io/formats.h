@@ -26,6 +26,11 @@ void check_vtk_writable(const Mesh& mesh);
 
 void read_vtu(const std::string& path, const std::string& data, Mesh* mesh);
 void write_vtu(const Mesh& mesh, const WriteOptions& options, std::string* out);
+// .pvtu (pvtu.cc): the path of piece K, the mesh of piece K of P, the index's text.
+std::string pvtu_piece_path(const std::string& pvtu, int piece);
+Mesh pvtu_piece(const Mesh& mesh, int piece, int pieces);
+std::string pvtu_index(const std::string& pvtu, const Mesh& mesh, const WriteOptions& options,
+                       int pieces);
 
 void read_medit(const std::string& path, const std::string& data, Mesh* mesh);
 void write_medit(const Mesh& mesh, const WriteOptions& options, std::string* out);

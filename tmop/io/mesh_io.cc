@@ -36,13 +36,14 @@ bool is_openmesh_ext(const std::string& ext) {
   return ext == "obj" || ext == "off" || ext == "ply";
 }
 
-const char* kKnown = "known: .msh .vtk .vtu .mesh .ugrid .su2 .exo .e .cgns .obj .off .ply .stl";
+const char* kKnown =
+    "known: .msh .vtk .vtu .mesh .ugrid .su2 .exo .e .cgns .obj .off .ply .stl (.pvtu: write only)";
 
 bool is_exodus_ext(const std::string& ext) { return ext == "exo" || ext == "e"; }
 
 bool is_known_ext(const std::string& ext) {
-  return ext == "msh" || ext == "vtk" || ext == "vtu" || ext == "mesh" || ext == "stl" ||
-         ext == "ugrid" || ext == "su2" || ext == "cgns" || is_exodus_ext(ext) ||
+  return ext == "msh" || ext == "vtk" || ext == "vtu" || ext == "pvtu" || ext == "mesh" ||
+         ext == "stl" || ext == "ugrid" || ext == "su2" || ext == "cgns" || is_exodus_ext(ext) ||
          is_openmesh_ext(ext);
 }
 
@@ -114,6 +115,9 @@ Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair) {
     if (!is_known_ext(ext))
       return Status::Failure(path + ": unknown mesh file extension '." + ext + "' (" + kKnown +
                              ")");
+    if (ext == "pvtu")
+      return Status::Failure(path +
+                             ": tmop writes .pvtu but does not read it (read its .vtu pieces)");
     if (is_exodus_ext(ext) || ext == "cgns") {
       // libexodusii and libcgns read the file by its name.
       if (ext == "cgns")
@@ -184,6 +188,9 @@ void check_writable_or_throw(const std::string& path, const Mesh& mesh,
     if (ext == "cgns") io::check_cgns_writable(mesh);
     if (ext == "vtk") io::check_vtk_writable(mesh);
     if (ext == "vtu") io::check_vtk_cell_types(mesh, ".vtu");
+    if (ext == "pvtu") io::check_vtk_cell_types(mesh, ".pvtu");
+    if (ext == "pvtu" && options.pieces < 1)
+      throw Error("cannot write " + std::to_string(options.pieces) + " pieces (1 or more)");
     if (ext == "stl") io::check_stl_writable(mesh, options);
     if (is_openmesh_ext(ext)) io::check_openmesh_writable(ext, mesh);
   } catch (const Error& e) {
@@ -236,6 +243,13 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
       tmp.commit();
       return Status::Ok();
     }
+    if (ext == "pvtu") {
+      for (int k = 0; k < options.pieces; ++k) {
+        const Status s = write_pvtu_piece(path, mesh, options, k, options.pieces);
+        if (!s.ok()) return s;
+      }
+      return write_pvtu_index(path, mesh, options, options.pieces);
+    }
     if (is_exodus_ext(ext) || ext == "cgns") {
       // Atomically, through their own temporary files.
       if (ext == "cgns")
@@ -271,6 +285,35 @@ Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions&
     return Status::Failure(path + ": out of memory while writing");
   }
   return Status::Ok();
+}
+
+Status write_pvtu_piece(const std::string& path, const Mesh& mesh, const WriteOptions& options,
+                        int piece, int pieces) {
+  try {
+    check_writable_or_throw(path, mesh, options);
+    if (pieces < 1 || piece < 0 || piece >= pieces)
+      throw Error(path + ": piece " + std::to_string(piece) + " of " + std::to_string(pieces));
+    std::string bytes;
+    io::write_vtu(io::pvtu_piece(mesh, piece, pieces), options, &bytes);
+    return write_file_atomically(io::pvtu_piece_path(path, piece), bytes);
+  } catch (const Error& e) {
+    return Status::Failure(e.what());
+  } catch (const std::bad_alloc&) {
+    return Status::Failure(path + ": out of memory while writing");
+  }
+}
+
+Status write_pvtu_index(const std::string& path, const Mesh& mesh, const WriteOptions& options,
+                        int pieces) {
+  try {
+    check_writable_or_throw(path, mesh, options);
+    if (pieces < 1) throw Error(path + ": " + std::to_string(pieces) + " pieces");
+    return write_file_atomically(path, io::pvtu_index(path, mesh, options, pieces));
+  } catch (const Error& e) {
+    return Status::Failure(e.what());
+  } catch (const std::bad_alloc&) {
+    return Status::Failure(path + ": out of memory while writing");
+  }
 }
 
 }  // namespace tmop

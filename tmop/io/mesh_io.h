@@ -4,6 +4,8 @@
 //   .msh                  Gmsh 2.2 and 4.1, ASCII and binary (read both; write per options)
 //   .vtk                  VTK legacy UNSTRUCTURED_GRID (POLYDATA on read), ASCII and binary
 //                         (big-endian)
+//   .pvtu                 VTK's parallel XML UnstructuredGrid: an index and .vtu pieces (write
+//                         only: write_pvtu_piece below)
 //   .vtu                  VTK XML UnstructuredGrid (read: ascii, base64 inline, raw appended,
 //                         zlib-compressed; write: ascii or base64 inline)
 //   .mesh                 Medit / INRIA ASCII
@@ -61,6 +63,8 @@ struct WriteOptions {
   // Gmsh file-format version for .msh: 41 (default, what current Gmsh writes) or 22 (for old
   // readers).
   int msh_version = 41;
+  // .pvtu: the number of pieces write_mesh writes (1 or more).
+  int pieces = 1;
 };
 
 Status read_mesh(const std::string& path, Mesh* mesh);
@@ -76,6 +80,17 @@ struct SurfaceRepair {
 Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair);
 Status write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions& options = {});
 Status check_writable(const std::string& path, const Mesh& mesh, const WriteOptions& options = {});
+// .pvtu (VTK's parallel XML UnstructuredGrid; written, not read): an index naming pieces
+// STEM_K.vtu next to it (K = 0 .. pieces-1), each the .vtu of a contiguous block of the cells, in
+// cell order, with the vertices they use and their point and cell data; ParaView and VTK's
+// vtkXMLPUnstructuredGridReader open the index. write_mesh("X.pvtu") writes every piece and
+// then the index (each file atomically, not the set); the processes of a distributed run write
+// their own piece each and one of them the index:
+Status write_pvtu_piece(const std::string& path, const Mesh& mesh, const WriteOptions& options,
+                        int piece, int pieces);
+Status write_pvtu_index(const std::string& path, const Mesh& mesh, const WriteOptions& options,
+                        int pieces);
+
 // The part of check_writable that is about the place, for any output file (a report, say): the
 // directory exists and is writable (the temporary file goes there) and path is not a directory.
 Status check_output_path(const std::string& path);

@@ -1,5 +1,6 @@
 #include "tmop/io/node_order.h"
 
+#include <algorithm>
 #include <string>
 
 #include "tmop/core/status.h"
@@ -89,54 +90,90 @@ struct PatranEdges {
   int num_edges;
   int edges[12][2];
 };
-const PatranEdges kPatranEdges[] = {
-    {CellType::kTet10, 6, {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}},
-    {CellType::kHex20,
-     12,
-     {{0, 1},
-      {1, 2},
-      {2, 3},
-      {3, 0},
-      {0, 4},
-      {1, 5},
-      {2, 6},
-      {3, 7},
-      {4, 5},
-      {5, 6},
-      {6, 7},
-      {7, 4}}},
-    {CellType::kWedge15,
-     9,
-     {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 4}, {2, 5}, {3, 4}, {4, 5}, {5, 3}}},
-    {CellType::kPyramid13, 8, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 4}, {2, 4}, {3, 4}}},
-    {CellType::kPyramid14, 8, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 4}, {2, 4}, {3, 4}}},
+const int kHexPatranEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5},
+                                    {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
+const int kWedgePatranEdges[9][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 4},
+                                     {2, 5}, {3, 4}, {4, 5}, {5, 3}};
+const int kPyramidPatranEdges[8][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0},
+                                       {0, 4}, {1, 4}, {2, 4}, {3, 4}};
+const int kTetPatranEdges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+
+// The face (and centre) nodes after the edges, in each format's order: the corners of the face
+// whose centre each position holds, {-1} for the cell's centre.
+struct PatranFaces {
+  CellType type;
+  int first;  // position of the first face / centre node
+  int num;
+  int corners[7][4];
+};
+// Exodus II (the Sandia IOSS hex27 / wedge18 face tables): hex27's centre first, then its faces
+// z- z+ x- x+ y- y+.
+const PatranFaces kExodusFaces[] = {
+    {CellType::kHex27,
+     20,
+     7,
+     {{-1}, {0, 1, 2, 3}, {4, 5, 6, 7}, {0, 3, 4, 7}, {1, 2, 5, 6}, {0, 1, 4, 5}, {2, 3, 6, 7}}},
+    {CellType::kWedge18, 15, 3, {{0, 1, 3, 4}, {1, 2, 4, 5}, {0, 2, 3, 5}}},
+};
+// CGNS SIDS: hex27's faces z- y- x+ y+ x- z+, then its centre; wedge18 as Exodus.
+const PatranFaces kCgnsFaces[] = {
+    {CellType::kHex27,
+     20,
+     7,
+     {{0, 1, 2, 3}, {0, 1, 4, 5}, {1, 2, 5, 6}, {2, 3, 6, 7}, {0, 3, 4, 7}, {4, 5, 6, 7}, {-1}}},
+    {CellType::kWedge18, 15, 3, {{0, 1, 3, 4}, {1, 2, 4, 5}, {0, 2, 3, 5}}},
 };
 
-// perm[type][gmsh node] = PATRAN position, derived from the cell table's edges so the two cannot
-// disagree.
+bool same_corners(const CellFacet& f, const int (&c)[4]) {
+  if (f.num_corners != 4) return false;
+  for (int i = 0; i < 4; ++i)
+    if (std::find(f.corners, f.corners + 4, c[i]) == f.corners + 4) return false;
+  return true;
+}
+
+// perm[type][gmsh node] = the format's position, derived from the cell table's edges and facets
+// so the two cannot disagree.
 struct PatranPermutations {
   int perm[kNumCellTypes][kMaxCellNodes];
-  PatranPermutations() {
+  void edges(CellType type, const int (*pe)[2], int num) {
+    const CellInfo& info = cell_info(type);
+    for (int e = 0; e < info.num_edges; ++e) {
+      const int a = info.edges[e][0], b = info.edges[e][1];
+      for (int k = 0; k < num; ++k)
+        if ((pe[k][0] == a && pe[k][1] == b) || (pe[k][0] == b && pe[k][1] == a))
+          perm[static_cast<int>(type)][info.num_corners + e] = info.num_corners + k;
+    }
+  }
+  void faces(const PatranFaces& pf) {
+    const CellInfo& info = cell_info(pf.type);
+    int* p = perm[static_cast<int>(pf.type)];
+    for (int k = 0; k < pf.num; ++k) {
+      if (pf.corners[k][0] < 0) {  // the centre: Gmsh's last node
+        p[info.num_nodes - 1] = pf.first + k;
+        continue;
+      }
+      for (int f = 0; f < info.num_facets; ++f)
+        if (facet_node(info, f) >= 0 && same_corners(info.facets[f], pf.corners[k]))
+          p[facet_node(info, f)] = pf.first + k;
+    }
+  }
+  explicit PatranPermutations(const PatranFaces* pf, int num_faces) {
     for (int t = 0; t < kNumCellTypes; ++t)
       for (int i = 0; i < kMaxCellNodes; ++i) perm[t][i] = i;
-    for (const PatranEdges& p : kPatranEdges) {
-      const CellInfo& info = cell_info(p.type);
-      for (int e = 0; e < info.num_edges; ++e) {
-        const int a = info.edges[e][0], b = info.edges[e][1];
-        for (int k = 0; k < p.num_edges; ++k)
-          if ((p.edges[k][0] == a && p.edges[k][1] == b) ||
-              (p.edges[k][0] == b && p.edges[k][1] == a))
-            perm[static_cast<int>(p.type)][info.num_corners + e] = info.num_corners + k;
-      }
-    }
+    edges(CellType::kTet10, kTetPatranEdges, 6);
+    for (CellType t : {CellType::kHex20, CellType::kHex27}) edges(t, kHexPatranEdges, 12);
+    for (CellType t : {CellType::kWedge15, CellType::kWedge18}) edges(t, kWedgePatranEdges, 9);
+    for (CellType t : {CellType::kPyramid13, CellType::kPyramid14})
+      edges(t, kPyramidPatranEdges, 8);
+    for (int k = 0; k < num_faces; ++k) faces(pf[k]);
   }
 };
 
 }  // namespace
 
-int patran_index_of_gmsh_node(CellType type, int i) {
-  static const PatranPermutations p;
-  return p.perm[static_cast<int>(type)][i];
+int patran_index_of_gmsh_node(CellType type, int i, PatranFormat format) {
+  static const PatranPermutations exodus(kExodusFaces, 2), cgns(kCgnsFaces, 2);
+  return (format == PatranFormat::kExodus ? exodus : cgns).perm[static_cast<int>(type)][i];
 }
 
 void check_vtk_cell_types(const Mesh& mesh, const char* format) {

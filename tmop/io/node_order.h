@@ -32,16 +32,21 @@ bool cell_type_from_vtk(int vtk_type, CellType* type);
 // gmsh[p[i]] = vtk[i]; writing: vtk[i] = gmsh[p[i]].
 const int* gmsh_index_of_vtk_node(CellType type);
 
-// Exodus II and CGNS share one node order (PATRAN's): Gmsh's corners, then one node per edge in
-// their own edge order, then face / centre nodes (only quad9's centre here, which matches).
+// Exodus II and CGNS share PATRAN's corner and edge order: Gmsh's corners, then one node per edge
+// in their own edge order, then face / centre nodes.
 //   tet10:   edges 0-1 1-2 2-0 0-3 1-3 2-3 (Gmsh's 3-2, 3-1 swapped);
-//   hex20:   bottom 0-1 1-2 2-3 3-0, vertical 0-4 1-5 2-6 3-7, top 4-5 5-6 6-7 7-4;
-//   wedge15: bottom 0-1 1-2 2-0, vertical 0-3 1-4 2-5, top 3-4 4-5 5-3;
+//   hex20 / hex27: bottom 0-1 1-2 2-3 3-0, vertical 0-4 1-5 2-6 3-7, top 4-5 5-6 6-7 7-4;
+//   wedge15 / wedge18: bottom 0-1 1-2 2-0, vertical 0-3 1-4 2-5, top 3-4 4-5 5-3;
 //   pyramid13 / pyramid14: base 0-1 1-2 2-3 3-0, then 0-4 1-4 2-4 3-4 (pyramid14: then the base
 //            centre, as Gmsh);
+//   wedge18's face nodes (both): faces 0-1-4-3, 1-2-5-4, 2-0-3-5;
+//   hex27's face and centre nodes differ: Exodus puts the centre first, then faces z- z+ x- x+
+//            y- y+ (x- = corners 0-3-7-4, y- = 0-1-5-4); CGNS puts faces z- y- x+ y+ x- z+ first,
+//            then the centre;
 //   tri6, quad8, quad9 and the linear types: Gmsh's order.
+enum class PatranFormat { kExodus, kCgns };
 // The Exodus / CGNS position of Gmsh node i of a cell of `type`.
-int patran_index_of_gmsh_node(CellType type, int i);
+int patran_index_of_gmsh_node(CellType type, int i, PatranFormat format);
 
 // Throws "cannot write TYPE cells to FORMAT (...)" when the mesh has a cell without a VTK type.
 void check_vtk_cell_types(const Mesh& mesh, const char* format);

@@ -17,8 +17,10 @@ CellPoints cell_points(const Mesh& mesh, const std::vector<std::int32_t>& point_
   cp.offset.assign(static_cast<std::size_t>(mesh.num_cells()) + 1, 0);
   for (const std::int32_t c : point_cell) ++cp.offset[c + 1];
   for (int c = 0; c < mesh.num_cells(); ++c) cp.offset[c + 1] += cp.offset[c];
+  cp.identity = std::is_sorted(point_cell.begin(), point_cell.end());
+  if (cp.identity) return cp;
   cp.point.resize(point_cell.size());
-  std::vector<std::int64_t> next(cp.offset.begin(), cp.offset.end() - 1);
+  std::vector<std::int32_t> next(cp.offset.begin(), cp.offset.end() - 1);
   for (std::size_t p = 0; p < point_cell.size(); ++p)
     cp.point[next[point_cell[p]]++] = static_cast<std::int32_t>(p);
   return cp;
@@ -126,7 +128,7 @@ PartOutcome solve_part(const Mesh& mesh, const std::vector<double>& start, const
     std::vector<std::int32_t> points, point_cell;
     for (const int c : cells)
       for (std::int64_t k = cp.offset[c]; k < cp.offset[c + 1]; ++k) {
-        points.push_back(cp.point[k]);
+        points.push_back(cp.at(k));
         point_cell.push_back(c);
       }
     // Space-filling-curve order within the part, as the whole-mesh problem (stage.cc).

@@ -19,10 +19,16 @@
 
 namespace tmop {
 
-// Sample points per cell: points of cell c are point[offset[c] .. offset[c+1]).
+// Sample points per cell: points of cell c are at(offset[c]) .. at(offset[c+1] - 1). When the
+// stage's points are already grouped by cell in cell order (the canonical sample set: 1M tets,
+// 5M points) the list is the identity and is not stored.
 struct CellPoints {
-  std::vector<std::int64_t> offset;
-  std::vector<std::int32_t> point;
+  std::vector<std::int32_t> offset;  // points are numbered in int32 (point_cell), so are these
+  std::vector<std::int32_t> point;  // empty when identity
+  bool identity = false;
+  std::int32_t at(std::int64_t k) const {
+    return identity ? static_cast<std::int32_t>(k) : point[static_cast<std::size_t>(k)];
+  }
 };
 CellPoints cell_points(const Mesh& mesh, const std::vector<std::int32_t>& point_cell);
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <thread>
 
+#include "tmop/optimize/part_exchange.h"
 #include "tmop/optimize/part_solve.h"
 #include "tmop/partition/partition.h"
 #include "tmop/quality/parallel_for.h"
@@ -58,21 +59,18 @@ Pieces pieces_of(const Mesh& mesh, const VertexCells& vc, const std::vector<int>
   return pieces;
 }
 
-// Marks the vertices within `rings` rings of elements around the vertices whose coordinates
-// differ from `before`.
+// Marks the vertices within `rings` rings of elements around the vertices that moved after
+// phase run `since` (moved_at: per vertex, the last phase run that changed its coordinates).
 std::vector<char> near_moved(const Mesh& mesh, const VertexCells& vc,
-                             const std::vector<double>& before, int rings) {
-  const int n = mesh.num_vertices(), sd = mesh.space_dim;
+                             const std::vector<int>& moved_at, int since, int rings) {
+  const int n = mesh.num_vertices();
   std::vector<char> mark(n, 0);
   std::vector<int> front;
   for (int v = 0; v < n; ++v)
-    for (int a = 0; a < sd; ++a)
-      if (mesh.coords[static_cast<std::size_t>(v) * sd + a] !=
-          before[static_cast<std::size_t>(v) * sd + a]) {
-        mark[v] = 1;
-        front.push_back(v);
-        break;
-      }
+    if (moved_at[v] > since) {
+      mark[v] = 1;
+      front.push_back(v);
+    }
   for (int r = 0; r < rings; ++r) {
     std::vector<int> next;
     for (int v : front)
@@ -114,33 +112,58 @@ struct PhaseTotals {
 // Solves the pieces of one phase side by side on `threads` workers (largest first); each reads
 // the coordinates of the phase's start. Outcomes are summed in piece order: the totals do not
 // depend on the threads.
+// moved_at (when given): the vertices the phase changed get `stamp`.
 Status run_phase(Mesh* mesh, const StageContext& ctx, const IdealTable& table,
                  const VertexCells& vc, const CellPoints& cp, const Pieces& pieces, int threads,
                  double seconds, std::vector<PartScratch>* scratch, StageResult* result,
-                 PhaseTotals* totals) {
+                 PhaseTotals* totals, std::vector<int>* moved_at, int stamp) {
   const std::vector<double> start = mesh->coords;
   std::vector<PartOutcome> outcomes(pieces.size());
   std::vector<int> order(pieces.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return pieces[a].size() > pieces[b].size(); });
+  // With an exchange, this process solves its share: the parts dealt to the ranks in turn,
+  // largest first, back and forth (rank 0 1 ... R-1 R-1 ... 0 ...), so the shares are even.
+  PartExchange* exchange = ctx.spec->solver.exchange;
+  const int ranks = exchange ? exchange->size() : 1, me = exchange ? exchange->rank() : 0;
+  std::vector<int> owner(pieces.size(), 0);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const int round = static_cast<int>(k) / ranks, at = static_cast<int>(k) % ranks;
+    owner[order[k]] = round % 2 == 0 ? at : ranks - 1 - at;
+  }
+  std::vector<int> mine;
+  for (int i : order)
+    if (owner[i] == me) mine.push_back(i);
   std::atomic<std::size_t> next{0};
   // After a cancel no worker starts another part: the parts not solved stay at the phase's
   // start (each part moves only its own vertices, so the mix is a state a phase can leave).
   const ProgressCallback& progress = ctx.spec->solver.progress;
   auto work = [&](int w) {
-    for (std::size_t k = next++; k < order.size(); k = next++) {
+    for (std::size_t k = next++; k < mine.size(); k = next++) {
       if (progress.cancelled()) break;
-      const int i = order[k];
+      const int i = mine[k];
       outcomes[i] = solve_part(*mesh, start, ctx, table, vc, cp, pieces[i], seconds, &(*scratch)[w],
                                &mesh->coords);
     }
   };
-  const int workers = std::max(1, std::min<int>(threads, static_cast<int>(pieces.size())));
+  const int workers = std::max(1, std::min<int>(threads, static_cast<int>(mine.size())));
   std::vector<std::thread> pool;
   for (int w = 1; w < workers; ++w) pool.emplace_back(work, w);
   work(0);
   for (std::thread& t : pool) t.join();
+  if (exchange) {
+    const Status s = exchange->share(pieces, owner, mesh->space_dim, &outcomes, &mesh->coords);
+    if (!s.ok()) return s;
+  }
+  if (moved_at) {
+    const int sd = mesh->space_dim;
+    for (const std::vector<int>& p : pieces)
+      for (int v : p)
+        if (!std::equal(mesh->vertex(v), mesh->vertex(v) + sd,
+                        &start[static_cast<std::size_t>(v) * sd]))
+          (*moved_at)[v] = stamp;
+  }
   *totals = PhaseTotals();
   totals->parts = static_cast<int>(pieces.size());
   for (const std::vector<int>& p : pieces) totals->vertices += static_cast<int>(p.size());
@@ -262,17 +285,23 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
     rec.inverted = -1;
     result->history.push_back(rec);
   }
-  // The coordinates as each phase left them: a later sweep re-solves only the vertices near
-  // those that moved since (the rest of its parts is where that phase left it at its optimum).
-  std::vector<std::vector<double>> after(3);
+  // Which vertices each phase run changed (a counter per run), and each phase's last run: a
+  // later sweep re-solves only near what moved since (one int per vertex, not a copy of the
+  // coordinates per phase).
+  std::vector<int> moved_at(so.sweep_rings > 0 ? mesh->num_vertices() : 0, 0);
+  int runs = 0, last_run[3] = {-1, -1, -1};
   bool out_of_time = false;
+  // Time limits and cancels are decided by every process together (part_exchange.h).
+  const auto agreed = [&so](bool local) {
+    return so.exchange ? so.exchange->max_of(local ? 1.0 : 0.0) > 0 : local;
+  };
   for (int sweep = 1; sweep <= std::max(1, so.max_sweeps) && !out_of_time; ++sweep) {
     const double sweep_initial = cost;
     double sweep_decrease = 0;
     for (int ph = 0; ph < 3; ++ph) {
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (elapsed >= so.max_seconds) {
+      if (agreed(elapsed >= so.max_seconds)) {
         *reason = "time limit reached";
         out_of_time = true;
         break;
@@ -280,22 +309,24 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
       if (phases[ph]->empty()) continue;
       Pieces restricted;
       const Pieces* pieces = phases[ph];
-      if (!after[ph].empty() && so.sweep_rings > 0) {
-        restricted = restrict_pieces(*pieces, near_moved(*mesh, vc, after[ph], so.sweep_rings));
+      if (last_run[ph] >= 0 && so.sweep_rings > 0) {
+        restricted =
+            restrict_pieces(*pieces, near_moved(*mesh, vc, moved_at, last_run[ph], so.sweep_rings));
         pieces = &restricted;
       }
       PhaseTotals totals;
-      if (so.progress.cancelled()) {  // cancelled from another thread during the last phase
+      if (agreed(so.progress.cancelled())) {  // cancelled from another thread during the last phase
         *reason = "cancelled";
         out_of_time = true;
         break;
       }
       if (!pieces->empty()) {
+        ++runs;
         s = run_phase(mesh, ctx, table, vc, cp, *pieces, threads, so.max_seconds - elapsed,
-                      &scratch, result, &totals);
+                      &scratch, result, &totals, so.sweep_rings > 0 ? &moved_at : nullptr, runs);
         if (!s.ok()) return s;
       }
-      if (so.sweep_rings > 0) after[ph] = mesh->coords;
+      last_run[ph] = runs;
       sweep_decrease += totals.initial_cost - totals.final_cost;
       IterationRecord rec;
       rec.iteration = ++record;
@@ -328,7 +359,7 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
         pr.stage = spec.name;
         so.progress(pr);
       }
-      if (so.progress.cancelled()) {  // the next phase does not start
+      if (agreed(so.progress.cancelled())) {  // the next phase does not start
         *reason = "cancelled";
         out_of_time = true;
         break;

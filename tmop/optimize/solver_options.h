@@ -15,6 +15,8 @@
 
 namespace tmop {
 
+class PartExchange;
+
 struct IterationRecord {
   int iteration = 0;
   // The stage's objective in StageResult's units (initial_objective / final_objective): the mean
@@ -180,6 +182,9 @@ struct SolverOptions {
   int sweep_rings = 2;
 
   int threads = 0;  // 0: all hardware threads
+  // Partitioned stages shared among processes (part_exchange.h: MPI, tmop/parallel/): this
+  // process solves its share of each phase's parts. Null: every part here. Not owned.
+  PartExchange* exchange = nullptr;
   // Called after every iteration (also iteration 0) when set, with the stage's name; returning
   // false cancels (ProgressCallback above). verbose prints a line to stderr. Without either, the
   // per-iteration history records the solver's objective only (the objective, worst quality and

@@ -67,6 +67,7 @@ struct WholeSolveInfo {
   // Untangling that ended worse than an earlier round (or its start) returned that round's
   // state: the round (0 = the start) and the last round's inverted count.
   int kept_round = -1, last_round_inverted = 0;
+  bool spread = false;  // stopped early: the tangle spread (StageSpec::untangle_spread_rounds)
 };
 
 // The whole-mesh solve: one ceres::Problem over every free vertex, solved once, or in surface
@@ -218,6 +219,9 @@ Status solve_whole(Mesh* mesh, StageContext& ctx, const IdealTable& table,
       std::vector<double> best_coords = mesh->coords;
       const int max_rounds = det_now > 0 ? 0 : spec.untangle_max_rounds;
       int solved_rounds = 0;
+      int spreading = 0;  // rounds in a row that spread the tangle (StageSpec)
+      const std::vector<int> start_bad = now_bad;
+      std::size_t fewest_left = start_bad.size();  // of them still inverted after a round
       for (int round = 0; round < max_rounds; ++round) {
         metrics.push_back(std::make_unique<UntangleMetric>(d, eps, theta));
         for (SamplePointCost& cost : assembly.costs()) cost.set_metric(0, metrics.back().get());
@@ -235,8 +239,23 @@ Status solve_whole(Mesh* mesh, StageContext& ctx, const IdealTable& table,
           best_det = det_min;
           best_round = round + 1;
           best_coords = mesh->coords;
+          spreading = 0;
         } else if (spec.untangle_patience > 0 && round + 1 - best_round >= spec.untangle_patience) {
           break;
+        } else if (spec.untangle_spread_rounds > 0 &&
+                   static_cast<double>(now_bad.size()) >=
+                       spec.untangle_spread_factor * static_cast<double>(best_bad)) {
+          // The start's inverted cells: were more of them repaired than before?
+          std::size_t left = 0;
+          for (int c : start_bad) left += std::binary_search(now_bad.begin(), now_bad.end(), c);
+          spreading = left < fewest_left ? 0 : spreading + 1;
+          fewest_left = std::min(fewest_left, left);
+          if (spreading >= spec.untangle_spread_rounds) {
+            info->spread = true;
+            break;
+          }
+        } else {
+          spreading = 0;
         }
         const double energy = summary.final_cost;
         const double sigma = std::max(1 - energy / summary.initial_cost, spec.untangle_sigma_min);
@@ -457,6 +476,7 @@ Status optimize_stage(Mesh* mesh, const StageSpec& spec, StageResult* result) {
                                          : "untangled in " + std::to_string(info.untangle_rounds) +
                                                " eps rounds (final eps " + eps_text + ")")
             : "still inverted after " + std::to_string(info.untangle_rounds) + " eps rounds" +
+                  (info.spread ? std::string(" (stopped: the tangle spread)") : std::string()) +
                   (info.kept_round < 0 || info.last_round_inverted == inverted
                        ? std::string()
                        : "; the best state kept (" +

@@ -116,6 +116,26 @@ const char* guarantee_measure_label(GuaranteeMeasure m) {
 
 bool guarantee_measure_has_mean(GuaranteeMeasure m) { return index(m) < 4; }
 
+namespace {
+
+// Cell c's row of *v (an element of dimension d).
+void measure_row(const Mesh& mesh, std::int64_t c, const double* up, const QualityOptions& options,
+                 GuaranteeValues* v) {
+  double nodes[kMaxCellNodes * 3] = {};
+  const CellType type = mesh.cell_types[c];
+  const int sd = mesh.space_dim;
+  const std::int32_t* cell = mesh.cell(static_cast<int>(c));
+  for (int i = 0; i < cell_num_nodes(type); ++i) {
+    const double* x = mesh.vertex(cell[i]);
+    for (int k = 0; k < 3; ++k) nodes[3 * i + k] = k < sd ? x[k] : 0.0;
+  }
+  measure_cell(type, nodes, up, sd, options, &v->cell[c], &v->sliver[c], &v->inverted[c]);
+}
+
+const double kZUp[3] = {0, 0, 1};
+
+}  // namespace
+
 GuaranteeValues guarantee_values(const Mesh& mesh, int threads) {
   GuaranteeValues v;
   const std::int64_t n = mesh.num_cells();
@@ -126,26 +146,20 @@ GuaranteeValues guarantee_values(const Mesh& mesh, int threads) {
   v.inverted.assign(n, 0);
   const int d = mesh.dim();
   if (d < 2) return v;
-  const bool flat = is_planar_2d(mesh);
-  const double z_up[3] = {0, 0, 1};
-  const double* up = flat ? z_up : nullptr;
-  const int sd = mesh.space_dim;
+  const double* up = is_planar_2d(mesh) ? kZUp : nullptr;
   QualityOptions options;
   options.threads = 1;
   parallel_chunks(n, kScanChunk, threads, [&](std::int64_t, std::int64_t begin, std::int64_t end) {
-    double nodes[kMaxCellNodes * 3] = {};
-    for (std::int64_t c = begin; c < end; ++c) {
-      const CellType type = mesh.cell_types[c];
-      if (cell_dim(type) != d) continue;
-      const std::int32_t* cell = mesh.cell(static_cast<int>(c));
-      for (int i = 0; i < cell_num_nodes(type); ++i) {
-        const double* x = mesh.vertex(cell[i]);
-        for (int k = 0; k < 3; ++k) nodes[3 * i + k] = k < sd ? x[k] : 0.0;
-      }
-      measure_cell(type, nodes, up, sd, options, &v.cell[c], &v.sliver[c], &v.inverted[c]);
-    }
+    for (std::int64_t c = begin; c < end; ++c)
+      if (cell_dim(mesh.cell_types[c]) == d) measure_row(mesh, c, up, options, &v);
   });
   return v;
+}
+
+void measure_guarantee_cell(const Mesh& mesh, int c, bool planar, GuaranteeValues* values) {
+  QualityOptions options;
+  options.threads = 1;
+  measure_row(mesh, c, planar ? kZUp : nullptr, options, values);
 }
 
 GuaranteeBaseline guarantee_baseline(const Mesh& input, int threads) {

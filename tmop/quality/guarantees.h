@@ -63,6 +63,9 @@ struct GuaranteeValues {
 };
 // threads: 0 = all cores; the values do not depend on it.
 GuaranteeValues guarantee_values(const Mesh& mesh, int threads = 0);
+// Measures one element c of `mesh` (a cell of dimension dim()) into row c of *values (sized for
+// the mesh), as guarantee_values does; planar = is_planar_2d(mesh), computed once by the caller.
+void measure_guarantee_cell(const Mesh& mesh, int c, bool planar, GuaranteeValues* values);
 
 // The input's worst per (type, region, measure) and mean per (type, measure).
 struct GuaranteeBaseline {

@@ -88,7 +88,8 @@ Status equal_edge(Mesh* mesh, const EqualEdgeOptions& options, RecipeResult* res
     st.fixed = held;
     if (st.terms.size() > 1)  // the shape guard term, weighted up where the guard asks
       for (std::size_t p = 0; p < points.size(); ++p)
-        st.terms[1].weights[p] = options.shape_guard_weight * weight[points.cell[p]];
+        st.terms[1].weights[p] =
+            options.shape_guard_weight * (weight.empty() ? 1.0 : weight[points.cell[p]]);
     if (round > 0) st.name += " (guard round " + std::to_string(round) + ")";
     StageResult sr;
     Status s = optimize_stage(mesh, st, &sr);

@@ -3,10 +3,14 @@
 // after a solve, the cells that break a guarantee (guard_violators: below their type's and
 // region's input worst, a fallen type mean, a new sliver or inversion) are held at their input
 // shape - their vertices join the fixed set - and the solve runs again from the input. Held
-// cells satisfy every guarantee, the held set only grows, so the rounds end; when `rounds`
-// re-solves are spent and cells still break a guarantee, the largest step back towards the
-// input among 1/2, 1/4, ..., 1/64 of the last result's displacement that keeps every guarantee
-// is taken, else the input itself.
+// cells satisfy every guarantee, the held set only grows, so the rounds end. Each round's result
+// is also repaired without a solve (its violators put back). When the guard ends - with the
+// input back, with a result that holds cells, or out of rounds - the first round's moves are
+// kept vertex by vertex where they keep every guarantee (with held cells: the held vertices
+// only) and the vertices whose move was not kept move uphill on the measures (vertex_moves.h);
+// the higher-scoring result is kept. When `rounds` re-solves are spent with nothing repaired,
+// the largest step back towards the input among 1/2, 1/4, ..., 1/64 of the last result's
+// displacement that keeps every guarantee is taken, else the input itself.
 #ifndef TMOP_RECIPES_GUARD_H_
 #define TMOP_RECIPES_GUARD_H_
 
@@ -47,7 +51,8 @@ struct GuardOptions {
 // solve(fixed, cell_weight, round): optimizes *mesh in place from its current coordinates (the
 // input's, every round) with `fixed` vertices held, appending its stages to result->stages. `fixed`
 // starts as the caller's flags (one per vertex). `baseline` is the input's (guarantee_baseline of
-// *mesh as given). cell_weight (one per cell, 1 unless soft rounds raised it) multiplies the
+// *mesh as given). cell_weight (one per cell, 1 unless soft rounds raised it; empty: 1 for every
+// cell, the rounds before any soft round) multiplies the
 // recipe's shape term at the cell's points. Fills result->guard_held_cells and the last stage's
 // termination note. Returns the first failing solve's status (mesh restored to the input).
 using GuardSolve = std::function<Status(const std::vector<char>& fixed,

@@ -111,7 +111,12 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
   // The boundary's facet matching runs beside the quality passes (1M tets: 0.6 s hidden).
   std::vector<char> fixed = options.fixed;
   const bool need_mask = fixed.empty() && !geometry;
-  GuaranteeBaseline baseline;
+  // The guard's baseline: the caller's when it has one of this mesh, else computed here.
+  const bool own_baseline =
+      options.guard_worst &&
+      !(options.input_baseline &&
+        static_cast<int>(options.input_baseline->cell_type.size()) == mesh->num_cells());
+  GuaranteeBaseline computed;
   side_by_side(
       threads != 1,
       [&] {
@@ -119,7 +124,7 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
       },
       [&] {
         result->before = measure_mesh(*mesh, options.rule);
-        if (options.guard_worst) baseline = guarantee_baseline(*mesh, threads);
+        if (own_baseline) computed = guarantee_baseline(*mesh, threads);
       });
   if (fixed.empty()) fixed.assign(mesh->num_vertices(), 0);
   if (static_cast<int>(fixed.size()) != mesh->num_vertices())
@@ -184,6 +189,8 @@ Status improve_shape(Mesh* mesh, const ShapeOptions& options, RecipeResult* resu
     if (s.ok()) result->stages.push_back(sr);
     return s;
   };
+  const GuaranteeBaseline& baseline =
+      own_baseline || !options.guard_worst ? computed : *options.input_baseline;
   Status s = guarded_solve(mesh, baseline, guard, fixed, solve, result);
   if (!s.ok()) return s;
   result->after = measure_mesh(*mesh, options.rule);

@@ -21,6 +21,7 @@
 #include "tmop/core/status.h"
 #include "tmop/mesh/mesh.h"
 #include "tmop/optimize/stage.h"
+#include "tmop/quality/guarantees.h"
 #include "tmop/recipes/boundary_layer.h"
 #include "tmop/recipes/recipe_geometry.h"
 #include "tmop/recipes/recipe_result.h"
@@ -71,6 +72,10 @@ struct ShapeOptions {
   // when set, slide/boundary are ignored. Not owned.
   const RecipeGeometry* geometry = nullptr;
   SolverOptions solver;
+  // guarantee_baseline(*mesh) of the mesh as given, when the caller has it (tmop_optimize
+  // computes it for its own check): the guard takes it instead of computing it again (1M tets:
+  // ~80 MB and a pass over the mesh). Not owned; must be of this mesh's current coordinates.
+  const GuaranteeBaseline* input_baseline = nullptr;
 };
 
 // Fails, leaving the mesh unchanged, on an inverted input when the metric is a barrier (the

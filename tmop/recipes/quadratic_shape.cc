@@ -7,7 +7,6 @@
 #include <functional>
 #include <limits>
 #include <string>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -17,7 +16,7 @@
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/cell_quality.h"
 #include "tmop/quality/guarantees.h"
-#include "tmop/quality/parallel_for.h"
+#include "tmop/recipes/quadratic_guard.h"
 #include "tmop/recipes/recipe_geometry.h"
 #include "tmop/target/target.h"
 
@@ -27,6 +26,8 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Passes of the step-back repair (quadratic_guard.h) before a round's result is given up.
+constexpr int kMaxStepBackPasses = 64;
 
 bool is_quadratic_element(const Mesh& mesh, int c, int d) {
   return mesh.is_element(c, d) && cell_info(mesh.cell_type(c)).order == 2;
@@ -138,69 +139,6 @@ void project_sliding_nodes(const RecipeGeometry& geometry, const std::vector<dou
   }
 }
 
-QuadraticCellMeasures cell_measures(const Mesh& mesh, int c) {
-  double nodes[kMaxCellNodes * 3] = {};
-  const int n = mesh.cell_size(c);
-  for (int i = 0; i < n; ++i)
-    for (int a = 0; a < mesh.space_dim; ++a) nodes[3 * i + a] = mesh.vertex(mesh.cell(c)[i])[a];
-  return quadratic_cell_measures(mesh.cell_type(c), nodes);
-}
-
-// threads: as SolverOptions::threads (0 = all cores); the result does not depend on it.
-std::vector<QuadraticCellMeasures> all_measures(const Mesh& mesh, int threads) {
-  const int d = mesh.dim();
-  std::vector<QuadraticCellMeasures> out(mesh.num_cells());
-  parallel_chunks(mesh.num_cells(), 4096, threads,
-                  [&](std::int64_t, std::int64_t b, std::int64_t e) {
-                    for (std::int64_t c = b; c < e; ++c)
-                      if (is_quadratic_element(mesh, static_cast<int>(c), d))
-                        out[c] = cell_measures(mesh, static_cast<int>(c));
-                  });
-  return out;
-}
-
-bool is_sliver(const QuadraticCellMeasures& m) {
-  return m.max_dihedral > 150 && m.min_dihedral < 10;  // false for NaN (not a tet)
-}
-
-// The measures whose worst and mean per type are guarded, as (getter index): corner,
-// pointwise ratio, det ratio.
-constexpr int kGuarded = 3;
-double guarded(const QuadraticCellMeasures& m, int k) {
-  return k == 0 ? m.corner : k == 1 ? m.pointwise_ratio : m.det_ratio;
-}
-const char* guarded_name(int k) {
-  return k == 0 ? "corner quality" : k == 1 ? "pointwise mean ratio" : "det J ratio";
-}
-
-struct TypeBounds {
-  int count = 0;
-  double worst[kGuarded] = {kInf, kInf, kInf};
-  double sum[kGuarded] = {0, 0, 0};
-  double min_dihedral = kInf, max_dihedral = -kInf;
-};
-
-std::vector<TypeBounds> type_bounds(const Mesh& mesh, const std::vector<QuadraticCellMeasures>& m) {
-  const int d = mesh.dim();
-  std::vector<TypeBounds> out(kNumCellTypes);
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    if (!is_quadratic_element(mesh, c, d)) continue;
-    TypeBounds& b = out[static_cast<int>(mesh.cell_type(c))];
-    ++b.count;
-    for (int k = 0; k < kGuarded; ++k) {
-      const double v = guarded(m[c], k);
-      if (std::isnan(v)) continue;
-      b.worst[k] = std::min(b.worst[k], v);
-      b.sum[k] += v;
-    }
-    if (!std::isnan(m[c].min_dihedral)) {
-      b.min_dihedral = std::min(b.min_dihedral, m[c].min_dihedral);
-      b.max_dihedral = std::max(b.max_dihedral, m[c].max_dihedral);
-    }
-  }
-  return out;
-}
-
 // corner_mesh without the cells flagged in `drop` (empty: none).
 Mesh corner_mesh_without(const Mesh& mesh, const std::vector<char>& drop) {
   Mesh out;
@@ -218,119 +156,16 @@ Mesh corner_mesh_without(const Mesh& mesh, const std::vector<char>& drop) {
   return out;
 }
 
-// The cells of `mesh` that break a guarantee of quadratic_shape.h against the input (m0, b0):
-// flags them in *violates and returns their count; *first describes one.
-int find_violators(const Mesh& mesh, const std::vector<QuadraticCellMeasures>& m0,
-                   const std::vector<TypeBounds>& b0, const GuaranteeBaseline& g0,
-                   const ShapeOptions& options, std::vector<char>* out, std::string* first_out) {
-  const bool guard_worst = options.guard_worst;
-  const double tol = options.guard_tolerance;
-  const int threads = options.solver.threads;
-  const int d = mesh.dim();
-  const std::vector<QuadraticCellMeasures> m1 = all_measures(mesh, threads);
-  std::vector<char>& violates = *out;
-  violates.assign(mesh.num_cells(), 0);
-  int violators = 0;
-  std::string& first = *first_out;
-  first.clear();
-  auto flag = [&](int c, const std::string& why) {
-    if (violates[c]) return;
-    violates[c] = 1;
-    ++violators;
-    if (first.empty()) first = "cell " + std::to_string(c) + " " + why;
-  };
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    if (!is_quadratic_element(mesh, c, d)) continue;
-    const TypeBounds& b = b0[static_cast<int>(mesh.cell_type(c))];
-    if (m0[c].valid && !m1[c].valid) flag(c, "not certified valid");
-    if (!guard_worst) continue;
-    for (int k = 0; k < kGuarded; ++k)
-      if (guarded(m1[c], k) < b.worst[k] - tol)
-        flag(c, std::string(guarded_name(k)) + " below the input's worst");
-    if (m1[c].min_dihedral < b.min_dihedral - 1e-6 || m1[c].max_dihedral > b.max_dihedral + 1e-6)
-      flag(c, "dihedral angle outside the input's range");
-    if (is_sliver(m1[c]) && !is_sliver(m0[c])) flag(c, "became a sliver");
-  }
-  if (violators == 0 && guard_worst) {
-    // Means per type: where one fell, the cells whose own measure fell most are held, until
-    // what they give back covers the shortfall (with a margin: their neighbours move too).
-    // Holding every cell whose measure fell would also hold cells the worst depends on (t5
-    // at order 2: 899 cells, the worst corner tet among them), and cells that fell by
-    // round-off only (100k tet10: 46,000 straight cells whose det J ratio is 1 - 1e-16).
-    // Cells whose input was worse than this round's worst (of any guarded measure), and cells
-    // sharing a vertex with them, are protected: held, they would go back to their input and
-    // lower the worst again.
-    const std::vector<TypeBounds> b1 = type_bounds(mesh, m1);
-    std::vector<char> protect(mesh.num_vertices(), 0);
-    for (int c = 0; c < mesh.num_cells(); ++c) {
-      if (!is_quadratic_element(mesh, c, d)) continue;
-      const TypeBounds& b = b1[static_cast<int>(mesh.cell_type(c))];
-      bool low = false;
-      for (int k = 0; k < kGuarded; ++k) low |= guarded(m0[c], k) < b.worst[k];
-      if (low)
-        for (int i = 0; i < mesh.cell_size(c); ++i) protect[mesh.cell(c)[i]] = 1;
-    }
-    auto is_protected = [&](int c) {
-      for (int i = 0; i < mesh.cell_size(c); ++i)
-        if (protect[mesh.cell(c)[i]]) return true;
-      return false;
-    };
-    for (int t = 0; t < kNumCellTypes; ++t) {
-      if (b0[t].count == 0) continue;
-      for (int k = 0; k < kGuarded; ++k) {
-        const double shortfall = b0[t].sum[k] - b1[t].sum[k];
-        if (!(shortfall > tol * b0[t].count)) continue;
-        // Candidates: cells whose measure fell (beyond round-off), the unprotected ones first,
-        // each group largest fall first; the protected ones only when the others give back less
-        // than half the shortfall (the mean is a guarantee; held, they still end at least at the
-        // input's worst). 100k tet10 t5: holding them in the first round kept the worst corner
-        // mean ratio at the input's 0.367, from the third round 0.39.
-        std::vector<std::tuple<bool, double, int>> fell;
-        for (int c = 0; c < mesh.num_cells(); ++c) {
-          if (!is_quadratic_element(mesh, c, d) || static_cast<int>(mesh.cell_type(c)) != t)
-            continue;
-          const double delta = guarded(m0[c], k) - guarded(m1[c], k);
-          if (delta > 1e-9) fell.emplace_back(is_protected(c), -delta, c);
-        }
-        std::sort(fell.begin(), fell.end());
-        double unprotected = 0;
-        for (const auto& [is_prot, minus_delta, c] : fell)
-          if (!is_prot) unprotected -= minus_delta;
-        const bool with_protected = unprotected < 0.5 * shortfall;
-        double given_back = 0;
-        for (const auto& [is_prot, minus_delta, c] : fell) {
-          if (given_back >= 1.25 * shortfall + tol * b0[t].count) break;
-          if (is_prot && !with_protected) break;
-          given_back -= minus_delta;
-          flag(c, std::string("mean ") + guarded_name(k) + " of " +
-                      cell_name(static_cast<CellType>(t)) + " fell");
-        }
-      }
-    }
-  }
-  if (guard_worst) {
-    // The guarantees as tmop_optimize checks them (quality/guarantees.h): per region too.
-    GuaranteeOptions g;
-    g.tolerance = tol;
-    g.means = options.guard_means;
-    const GuaranteeValues values = guarantee_values(mesh, threads);
-    for (int c : guard_violators(g0, values, g))
-      flag(c, "breaks a guarantee of its type or region");
-  }
-  return violators;
-}
-
 // The stage over curved interior nodes: mid-edge, mid-face and centre nodes off the corners'
 // interpolation (curved by the input or by untangling; this recipe never curves a straight
 // edge) and not on the boundary (`boundary` or a sliding geometry) move, everything else is
 // fixed. Terms: the caller's shape metric and target at every sample point (the pointwise mean
 // ratio) and the size barrier toward the straight-sided cell's Jacobian (det J toward its
 // constant: the det J ratio), so curvature the cells do not need is relaxed. The same guard as
-// the corner stage; when its rounds run out the nodes stay as they were.
+// the corner stage; when its rounds run out (or end by holding every node) the first round's
+// result stepped back is kept, if it kept every guarantee, else the nodes stay as they were.
 void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeometry* geometry,
-                        const std::vector<char>& boundary,
-                        const std::vector<QuadraticCellMeasures>& m0,
-                        const std::vector<TypeBounds>& b0, const GuaranteeBaseline& g0,
+                        const std::vector<char>& boundary, const QuadraticBaseline& input,
                         RecipeResult* result) {
   const int d = mesh->dim();
   std::vector<char> fixed(mesh->num_vertices(), 1);
@@ -389,6 +224,8 @@ void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeo
   st.terms.push_back(shape);
   st.terms.push_back(size);
   const std::vector<double> start = mesh->coords;
+  std::vector<double> stepped;  // the first round's result stepped back, if it kept every guarantee
+  std::string stepped_note;
   for (int round = 0; round <= options.guard_rounds; ++round) {
     st.name = round == 0
                   ? "shape (curved nodes)"
@@ -406,8 +243,43 @@ void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeo
     }
     std::vector<char> violates;
     std::string first;
-    const int violators = find_violators(*mesh, m0, b0, g0, options, &violates, &first);
-    if (violators == 0) return;
+    const int violators = quadratic_violators(*mesh, input, options, &violates, &first);
+    StageResult& last = result->stages.back();
+    if (violators == 0) {
+      // Rounds that ended by holding every node give the start back: a stepped-back result
+      // of an earlier round instead.
+      if (mesh->coords == start && !stepped.empty()) {
+        mesh->coords = stepped;
+        last.termination += "; quadratic guard: " + stepped_note;
+      }
+      return;
+    }
+    if (stepped.empty()) {
+      // This round's result with the violators' curved nodes stepped back towards where the
+      // stage began (quadratic_guard.h, no solve), kept for when the rounds give nothing.
+      const std::vector<double> solved = mesh->coords;
+      std::vector<char> unknown(fixed.size());
+      for (std::size_t v = 0; v < fixed.size(); ++v) unknown[v] = !fixed[v];
+      auto apply = [&](const std::vector<double>& t) {
+        for (int v = 0; v < mesh->num_vertices(); ++v)
+          for (int a = 0; a < mesh->space_dim; ++a) {
+            const std::size_t k = std::size_t(v) * mesh->space_dim + a;
+            mesh->coords[k] = start[k] + t[v] * (solved[k] - start[k]);
+          }
+      };
+      std::vector<char> bad = violates, held;
+      std::string why;
+      int passes = 0;
+      if (step_back_until_kept(mesh, input, options, unknown, apply, kMaxStepBackPasses, &bad,
+                               &passes, &why, &held) &&
+          mesh->coords != start) {
+        stepped = mesh->coords;
+        stepped_note = "round " + std::to_string(round) + "'s " + std::to_string(violators) +
+                       " cells (" + first + ") stepped back towards their start in " +
+                       std::to_string(passes) + " passes kept";
+      }
+      mesh->coords = solved;
+    }
     int newly_fixed = 0;
     for (int c = 0; c < mesh->num_cells(); ++c) {
       if (!violates[c]) continue;
@@ -418,10 +290,11 @@ void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeo
       }
     }
     mesh->coords = start;
-    StageResult& last = result->stages.back();
     if (newly_fixed == 0 || round == options.guard_rounds) {
       last.termination += "; quadratic guard: " + std::to_string(violators) +
-                          " cells would get worse (" + first + "): curved nodes kept";
+                          " cells would get worse (" + first + "): ";
+      if (!stepped.empty()) mesh->coords = stepped;
+      last.termination += stepped.empty() ? "curved nodes kept" : stepped_note;
       return;
     }
     last.termination +=
@@ -488,9 +361,8 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
   if (!gs.ok()) return gs;
 
   const std::vector<double> original = mesh->coords;
-  const std::vector<QuadraticCellMeasures> m0 = all_measures(*mesh, options.solver.threads);
-  const std::vector<TypeBounds> b0 = type_bounds(*mesh, m0);
-  const GuaranteeBaseline g0 = guarantee_baseline(*mesh, options.solver.threads);
+  const QuadraticBaseline input = quadratic_baseline(*mesh, options.solver.threads);
+  const std::vector<QuadraticCellMeasures>& m0 = input.cells;
 
   std::vector<char> fixed = options.fixed;
   if (fixed.empty()) {
@@ -524,8 +396,11 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
   const std::vector<char> boundary = fixed;  // before the guard holds any cell
   const int max_rounds = options.guard_rounds + 2;
   std::vector<char> placed;
+  // The last state that kept every guarantee: the input, then a round's result stepped back
+  // where it broke one; the next round starts from it (its held vertices fixed).
+  std::vector<double> base = original;
   for (int round = 0; round <= max_rounds; ++round) {
-    linear.coords = original;
+    linear.coords = base;
     lo.fixed = fixed;
     RecipeResult lr;
     Status s = improve_shape(&linear, lo, &lr);
@@ -546,8 +421,53 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
 
     std::vector<char> violates;
     std::string first;
-    const int violators = find_violators(*mesh, m0, b0, g0, options, &violates, &first);
+    const int violators = quadratic_violators(*mesh, input, options, &violates, &first);
     if (violators == 0) break;
+    StageResult& last = result->stages.back();
+    {
+      // Without a solve: the violators' corners back at the start of this round (their other
+      // nodes placed again from the corners), blended over 8 rings of their neighbours, again
+      // on the cells that then break one until none does (quadratic_guard.h). The next round
+      // starts there with those corners held: it wins back what the step back cost. On t3 at
+      // order 2, 44 of 34,028 cells break one after the first solve (dihedral angles, which the
+      // corner mesh's guard does not see); holding them and solving again from the input (as
+      // before) found new ones each round, 7 solves, tet10 mean 0.758 where the first had 0.800;
+      // stepped back and warm started: 0.768, 0.777, 0.782, 0.783 after rounds 0..3.
+      const std::vector<double> solved = mesh->coords;
+      std::vector<char> unknown(placed.size());
+      for (std::size_t v = 0; v < placed.size(); ++v) unknown[v] = !placed[v];
+      auto apply = [&](const std::vector<double>& t) {
+        for (int v = 0; v < mesh->num_vertices(); ++v)
+          for (int a = 0; a < mesh->space_dim; ++a) {
+            const std::size_t k = std::size_t(v) * mesh->space_dim + a;
+            mesh->coords[k] = placed[v] ? original[k] : base[k] + t[v] * (solved[k] - base[k]);
+          }
+        // Every other node placed again from the corners (from its input position).
+        place_nodes(original, mesh, &placed);
+        if (geometry && geometry->constraints)
+          project_sliding_nodes(*geometry, original, placed, mesh);
+      };
+      std::vector<char> bad = violates, held;
+      std::string why;
+      int passes = 0;
+      if (step_back_until_kept(mesh, input, options, unknown, apply, kMaxStepBackPasses, &bad,
+                               &passes, &why, &held) &&
+          mesh->coords != base) {
+        base = mesh->coords;
+        int newly_fixed = 0;
+        for (int v = 0; v < mesh->num_vertices(); ++v) {
+          newly_fixed += held[v] && !fixed[v];
+          fixed[v] |= held[v];
+        }
+        last.termination += "; quadratic guard: " + std::to_string(violators) + " cells (" + first +
+                            ") stepped back towards the round's start in " +
+                            std::to_string(passes) + " passes, " + std::to_string(newly_fixed) +
+                            " vertices held";
+        if (newly_fixed == 0 || round == max_rounds) break;
+        continue;
+      }
+      mesh->coords = solved;
+    }
     int newly_fixed = 0;
     for (int c = 0; c < mesh->num_cells(); ++c) {
       if (!violates[c]) continue;
@@ -557,49 +477,18 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
         f = 1;
       }
     }
-    StageResult& last = result->stages.back();
     if (newly_fixed == 0 || round == max_rounds) {
-      // Without a solve: the violators' corners back at their input positions (their other
-      // nodes placed again from the corners), repeated on the cells that then break one.
-      int left = violators;
-      for (int pass = 0; pass < 8 && left > 0; ++pass) {
-        int moved = 0;
-        for (int c = 0; c < mesh->num_cells(); ++c) {
-          if (!violates[c]) continue;
-          for (int i = 0; i < cell_info(mesh->cell_type(c)).num_corners; ++i) {
-            const std::size_t v = std::size_t(mesh->cell(c)[i]) * mesh->space_dim;
-            for (int a = 0; a < mesh->space_dim; ++a) {
-              moved += mesh->coords[v + a] != original[v + a];
-              mesh->coords[v + a] = original[v + a];
-            }
-          }
-        }
-        if (moved == 0) break;
-        // place_nodes leaves the nodes of unmoved corners where they are: start them all from
-        // their input positions.
-        for (int v = 0; v < mesh->num_vertices(); ++v)
-          if (placed[v])
-            std::copy_n(&original[std::size_t(v) * mesh->space_dim], mesh->space_dim,
-                        mesh->vertex(v));
-        place_nodes(original, mesh, &placed);
-        if (geometry && geometry->constraints)
-          project_sliding_nodes(*geometry, original, placed, mesh);
-        left = find_violators(*mesh, m0, b0, g0, options, &violates, &first);
-      }
-      if (left == 0 && mesh->coords != original) {
-        last.termination += "; quadratic guard: " + std::to_string(violators) +
-                            " cells would get worse: put back at their input shape";
-        break;
-      }
-      mesh->coords = original;
+      mesh->coords = base;
       last.termination += "; quadratic guard: " + std::to_string(violators) +
-                          " cells would get worse (" + first + "): input mesh kept";
+                          " cells would get worse (" + first +
+                          (base == original ? "): input mesh kept"
+                                            : "): the last round that kept every guarantee kept");
       break;
     }
     last.termination +=
         "; quadratic guard: " + std::to_string(violators) + " cells held (" + first + ")";
   }
-  relax_curved_nodes(mesh, options, geometry, boundary, m0, b0, g0, result);
+  relax_curved_nodes(mesh, options, geometry, boundary, input, result);
   result->after = measure_mesh(*mesh, options.rule);
   result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();

@@ -29,15 +29,19 @@
 // corner stage solves again from the input, at most guard_rounds + 2 times. Where a mean fell,
 // the cells whose own measure fell most are held until they give back the shortfall; cells next
 // to a cell whose input is below the round's worst are held only when the others cannot give
-// back half of it (holding them lowers the worst again). If a round limit is reached the input
-// is kept. With guard_worst false only validity is enforced.
+// back half of it (holding them lowers the worst again). Each round's violators are first stepped
+// back towards the round's start over rings of neighbours without a solve (quadratic_guard.h);
+// when that keeps every guarantee the next round starts there with them held. If a round limit
+// is reached the last state that kept every guarantee (at first the input) is kept. With
+// guard_worst false only validity is enforced.
 //
 // Then a second stage moves only the interior nodes that are already curved (off the corners'
 // interpolation: curved by the input or by untangling; straight edges stay fixed, boundary
 // nodes too): the shape metric toward the ideal element plus 0.3 x the size barrier toward the
-// straight-sided cell (det J toward its constant), under the same guard (violators held, the
-// nodes kept as they were when the rounds run out). Untangled gear tri6: det J ratio worst
-// 0.08 -> 0.18, pointwise mean ratio worst 0.46 -> 0.56.
+// straight-sided cell (det J toward its constant), under the same guard (violators held; when
+// the rounds run out or end by holding every node, the first round's result stepped back where
+// it broke a guarantee, quadratic_guard.h, else the nodes as they were). Untangled gear tri6: det J
+// ratio worst 0.08 -> 0.18, pointwise mean ratio worst 0.46 -> 0.56.
 //
 // Measured (tmop_optimize, default recipe, one thread): Gmsh t5 -order 2 (13,391 tet10): corner
 // mean ratio worst 0.367 -> 0.387, mean 0.784 -> 0.804, dihedral 11.75..156.64 -> 13.16..154.33

@@ -155,6 +155,7 @@ ShapeOptions shape_options(const std::string& name, const RecipeOptions& o,
   s.slide = recipe_slides(name, o);
   s.boundary = o.geometry;
   s.solver = o.solver;
+  s.input_baseline = o.input_baseline;
   return s;
 }
 

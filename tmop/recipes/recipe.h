@@ -108,6 +108,10 @@ struct RecipeOptions {
   // does. Not owned; may be null. Like a progress callback it makes every iteration measure the
   // mesh (objective, worst quality, inverted count: a pass over the mesh per iteration).
   const std::atomic<bool>* cancel = nullptr;
+  // guarantee_baseline of the mesh run_recipe is given, when the caller has it (tmop_optimize
+  // computes it for its own check): the shape guard of recipes shape and auto (on an input that
+  // needs no untangling) takes it instead of computing it again. Not owned; may be null.
+  const GuaranteeBaseline* input_baseline = nullptr;
 
   // Recipe-specific (refused by the others when set):
   const Mesh* moved = nullptr;    // preserve: the mesh with its boundary moved (not owned)

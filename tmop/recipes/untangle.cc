@@ -166,6 +166,7 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
     stage.untangle_max_rounds = options.max_rounds;
     stage.untangle_round_iterations = options.round_iterations;
     stage.untangle_patience = options.patience;
+    stage.untangle_spread_rounds = options.spread_rounds;
     stage.untangle_sigma_min = options.sigma_min;
     TermSpec term;
     try {
@@ -202,6 +203,8 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
       shape.fixed = options.fixed;
       shape.extra_points = extra;
       shape.geometry = geometry;
+      // The caller's baseline is of the input: it serves only if untangling moved nothing.
+      if (mesh->coords != input_coords) shape.input_baseline = nullptr;
       RecipeResult shape_result;
       s = improve_shape(mesh, shape, &shape_result);
       if (!s.ok()) return s;

@@ -36,6 +36,7 @@ struct UntangleOptions {
       5;  // few: eps is lowered again right after (LIM armadillo: 40 -> 5 took 38 s -> 6 s)
   double sigma_min = 0.5;  // eps schedule's least relative decrease (StageSpec::untangle_sigma_min)
   int patience = 8;        // stop after this many rounds without a better state (StageSpec)
+  int spread_rounds = 2;   // ... or this many that spread the tangle (StageSpec; 0: never)
   // After untangling, run the shape recipe (a barrier stage) from the valid mesh.
   bool improve_shape_after = true;
   ShapeOptions shape;  // options of that stage (its fixed flags are replaced by ours)
