@@ -193,6 +193,25 @@ TEST_F(RegistryTool, ARunReproducedFromItsReportIsByteIdentical) {
   EXPECT_EQ(err, dir_ + "/other.json: not a tmop_optimize report (no \"flags\" object)\n");
 }
 
+// Fuzz findings (tests/fuzz/regressions/report): a flag value with control bytes went into the
+// message raw; a \u escape without 4 hex digits and an unknown escape were taken as text.
+TEST_F(RegistryTool, BadReportValuesAndEscapesAreOnePrintableLine) {
+  const struct {
+    const char* json;
+    const char* message;
+  } cases[] = {
+      {"{\"flags\": {\"threads\": \"\\u0010x\"}}", "flag --threads: bad value '?x'"},
+      {"{\"flags\": {\"threads\": \"\\u12zz\"}}", "byte 25: bad \\u escape (4 hex digits)"},
+      {"{\"flags\": {\"threads\": \"\\q\"}}", "byte 25: bad escape \\q"},
+  };
+  for (const auto& c : cases) {
+    { std::ofstream(dir_ + "/r.json") << c.json; }
+    std::string err;
+    EXPECT_EQ(run("--from_report=" + dir_ + "/r.json --output=" + dir_ + "/d.msh", &err), 2);
+    EXPECT_EQ(err, dir_ + "/r.json: " + c.message + "\n") << c.json;
+  }
+}
+
 // "input_files" lists every file the run reads with its size and hash: the input, a
 // --fixed_nodes FILE and the --from_report; a changed file changes its hash.
 TEST_F(RegistryTool, TheReportHashesEveryFileTheRunReads) {

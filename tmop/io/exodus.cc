@@ -26,7 +26,9 @@
 
 #include "tmop/io/atomic_file.h"
 #include "tmop/io/formats.h"
+#include "tmop/io/netcdf_header.h"
 #include "tmop/io/node_order.h"
+#include "tmop/io/scanner.h"  // printable
 
 #ifdef TMOP_WITH_EXODUS
 #include <exodusII.h>
@@ -147,6 +149,7 @@ void read_exodus(const std::string& path, Mesh* mesh) {
   const std::uint64_t size = static_cast<std::uint64_t>(st.st_size);
   int cpu_ws = 8, io_ws = 0;
   float version = 0;
+  check_exodus_file(path);  // a crafted header must not make libnetcdf allocate (netcdf_header.h)
   ExoFile f;
   f.id = ex_open(path.c_str(), EX_READ, &cpu_ws, &io_ws, &version);
   if (f.id < 0) throw Error(path + ": not a readable Exodus II file (netCDF)");
@@ -187,7 +190,7 @@ void read_exodus(const std::string& path, Mesh* mesh) {
     CellType t;
     if (!exo_type(type, npe, &t))
       throw Error(path + ": element block " + std::to_string(id) + ": unsupported element type '" +
-                  std::string(type) + "' with " + std::to_string(npe) + " nodes");
+                  printable(type) + "' with " + std::to_string(npe) + " nodes");
     if (count < 0 || static_cast<std::uint64_t>(count) * npe * 4 > size)
       throw Error(path + ": element block " + std::to_string(id) + " declares " +
                   std::to_string(count) + " elements, more than the file holds");

@@ -8,10 +8,7 @@
 //     fnv1a64 null for a file that cannot be read], "settings": (recipe_settings_json: the options
 //     as the recipe used them, defaults resolved), "flags": {every tmop_optimize flag: its value
 //     as text, defaults included}, "run": (recipe_json), "quality_before", "quality_after"}.
-//   apply_report_flags: sets every flag of the report's "flags" that the command line did not
-//     give, except output, report and from_report (a rerun writes where it is told). Failure,
-//     one line: "FILE: cannot open ...", "FILE: not a tmop_optimize report (no \"flags\" object)",
-//     "FILE: byte N: ...", "FILE: flag --x: bad value 'y'".
+//   apply_report_flags (--from_report): report_flags.h.
 //   fnv1a64_file: the 64-bit FNV-1a hash of a file's bytes and its size.
 #ifndef TMOP_TOOLS_OPTIMIZE_RUN_REPORT_H_
 #define TMOP_TOOLS_OPTIMIZE_RUN_REPORT_H_
@@ -22,6 +19,7 @@
 #include "tmop/core/status.h"
 #include "tmop/quality/quality_report.h"
 #include "tmop/recipes/recipe_result.h"
+#include "tools/optimize/report_flags.h"
 
 namespace tmop_tools {
 
@@ -32,8 +30,6 @@ struct ReportInputs {
 
 std::string run_report(const ReportInputs& in, const tmop::RecipeResult& result,
                        const tmop::QualityReport& before, const tmop::QualityReport& after);
-
-tmop::Status apply_report_flags(const std::string& path);
 
 tmop::Status fnv1a64_file(const std::string& path, std::uint64_t* hash, std::uint64_t* bytes);
 
