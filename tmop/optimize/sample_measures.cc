@@ -113,24 +113,26 @@ void frame_from_normal(const double* n_in, double* F) {
 
 // Frames from each cell's own corner-polygon (Newell) normal: a surface mesh measured in its
 // cells' own planes (no geometry: folds are not visible this way).
+void own_frame(const Mesh& mesh, int c, double* F) {
+  const int k = cell_info(mesh.cell_type(c)).num_corners;
+  double n[3] = {0, 0, 0};
+  for (int i = 0; i < k; ++i) {
+    const double* a = mesh.vertex(mesh.cell(c)[i]);
+    const double* b = mesh.vertex(mesh.cell(c)[(i + 1) % k]);
+    n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  if (n[0] == 0 && n[1] == 0 && n[2] == 0) n[2] = 1;
+  frame_from_normal(n, F);
+}
+
 Frames own_frames(const Mesh& mesh) {
   Frames f;
   if (mesh.space_dim != 3 || mesh.dim() != 2) return f;
   f.F.assign(6 * mesh.num_cells(), 0);
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    if (cell_dim(mesh.cell_type(c)) != 2) continue;
-    const int k = cell_info(mesh.cell_type(c)).num_corners;
-    double n[3] = {0, 0, 0};
-    for (int i = 0; i < k; ++i) {
-      const double* a = mesh.vertex(mesh.cell(c)[i]);
-      const double* b = mesh.vertex(mesh.cell(c)[(i + 1) % k]);
-      n[0] += (a[1] - b[1]) * (a[2] + b[2]);
-      n[1] += (a[2] - b[2]) * (a[0] + b[0]);
-      n[2] += (a[0] - b[0]) * (a[1] + b[1]);
-    }
-    if (n[0] == 0 && n[1] == 0 && n[2] == 0) n[2] = 1;
-    frame_from_normal(n, f.F.data() + 6 * c);
-  }
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    if (cell_dim(mesh.cell_type(c)) == 2) own_frame(mesh, c, f.F.data() + 6 * c);
   return f;
 }
 

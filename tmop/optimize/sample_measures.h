@@ -34,6 +34,8 @@ struct Frames {
 void frame_from_normal(const double* n_in, double* F);
 // Frames from each cell's own corner-polygon (Newell) normal.
 Frames own_frames(const Mesh& mesh);
+// The frame own_frames gives cell c (a 2D cell of a mesh in 3D), into F (6 values).
+void own_frame(const Mesh& mesh, int c, double* F);
 
 // min det T over the sample points (cells point_cell, G of one term), and the cells where it is
 // <= 0 (sorted, once each) when bad is not null.

@@ -51,8 +51,7 @@ void update_surface_frames(const Mesh& mesh, const BoundaryConstraints& boundary
         for (int a = 0; a < 3; ++a) n[a] += nv[a];
     }
     if (n[0] == 0 && n[1] == 0 && n[2] == 0) {
-      const Frames own = own_frames(mesh);
-      std::copy(own.cell(c), own.cell(c) + 6, frames->F.data() + 6 * c);
+      own_frame(mesh, c, frames->F.data() + 6 * c);  // not own_frames: a pass per such cell
       continue;
     }
     frame_from_normal(n, frames->F.data() + 6 * c);
