@@ -30,6 +30,32 @@ inline int exit_code(const std::string& command) {
 
 inline bool have_gmsh() { return exit_code("gmsh --version > /dev/null 2>&1") == 0; }
 
+// Where gmsh-doc (a Debian package tools/install_deps.sh installs) puts Gmsh's tutorials and demos.
+constexpr const char* kGmshDoc = "/usr/share/doc/gmsh-doc/doc/gmsh/";
+
+// Meshes FOLDER/NAME.geo of gmsh-doc (e.g. "tutorial", "t16") with `gmsh ARGS NAME.geo`, run in a
+// fresh directory holding a copy of every .geo of FOLDER (gmsh-doc gzips some, which the
+// tutorials include), and reads the result without its lower-dimensional cells. 1: gmsh or the
+// file is missing (skip), 2: gmsh or the reader failed, 0: *mesh holds it.
+inline int gmsh_doc_mesh(const std::string& folder, const std::string& name,
+                         const std::string& args, Mesh* mesh) {
+  const std::string src = std::string(kGmshDoc) + folder + "/";
+  if (!have_gmsh() || exit_code("test -f " + src + name + ".geo") != 0) return 1;
+  char dir[] = "/tmp/tmop_gmsh_doc_XXXXXX";
+  if (!mkdtemp(dir)) return 2;
+  const std::string d = dir;
+  const int rc =
+      exit_code("cd " + d + " && for f in " + src + "*.geo " + src +
+                "*.geo.gz; do case $f in *.gz) zcat $f > $(basename $f .gz);; *) cp $f "
+                ".;; esac; done 2>/dev/null; gmsh " +
+                args + " -nt 1 -v 0 -format msh41 " + name + ".geo -o out.msh > /dev/null 2>&1");
+  const bool ok = rc == 0 && read_mesh(d + "/out.msh", mesh).ok();
+  exit_code("rm -rf " + d);
+  if (!ok) return 2;
+  mesh->remove_lower_dimensional_cells();
+  return 0;
+}
+
 // The unit square meshed by gmsh with a point attractor at its centre: target size 0.014 within
 // 0.02 of the centre growing to 0.12 at distance 0.35, Frontal-Delaunay triangles (Algorithm 6);
 // with quads = true recombined by the blossom full-quad algorithm, which also splits every

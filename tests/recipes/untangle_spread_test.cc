@@ -17,20 +17,11 @@ namespace tmop {
 namespace {
 
 TEST(UntangleSpread, CurvedBoundaryFoldsFailAfterTwoSpreadingRounds) {
-  const std::string geo = "/usr/share/doc/gmsh-doc/doc/gmsh/tutorial/t16.geo";
-  if (!testing_recipes::have_gmsh() || testing_recipes::exit_code("test -f " + geo) != 0)
-    GTEST_SKIP() << "gmsh or its tutorials not installed";
-  char dir[] = "/tmp/tmop_untangle_spread_XXXXXX";
-  ASSERT_NE(mkdtemp(dir), nullptr);
-  const std::string msh = std::string(dir) + "/t16.msh";
-  ASSERT_EQ(testing_recipes::exit_code("cd " + std::string(dir) + " && gmsh -3 -nt 1 -v 0 " + geo +
-                                       " -order 2 -clscale 3 -format msh41 -o " + msh +
-                                       " > /dev/null 2>&1"),
-            0);
   Mesh mesh;
-  ASSERT_TRUE(read_mesh(msh, &mesh).ok());
-  testing_recipes::exit_code(std::string("rm -rf ") + dir);
-  mesh.remove_lower_dimensional_cells();
+  const int got =
+      testing_recipes::gmsh_doc_mesh("tutorial", "t16", "-3 -order 2 -clscale 3", &mesh);
+  if (got == 1) GTEST_SKIP() << "gmsh or its tutorials (gmsh-doc) not installed";
+  ASSERT_EQ(got, 0);
   const std::int64_t inverted = count_inverted(mesh, 1);
   ASSERT_GT(inverted, 10);
   UntangleOptions opt;

@@ -93,19 +93,10 @@ TEST(VertexMoves, ClimbKeepsTheGuarantees) {
 // the fixed outer layers lose their right angles); the guard's repair moves the two interior
 // copies of a layer vertex together. Before: the input came back unchanged.
 TEST(VertexMoves, PripyrtetIsImprovedUnderEveryGuarantee) {
-  const std::string geo = "/usr/share/doc/gmsh-doc/doc/gmsh/demos/simple_geo/pripyrtet.geo";
-  if (!testing_recipes::have_gmsh() || testing_recipes::exit_code("test -f " + geo) != 0)
-    GTEST_SKIP() << "gmsh or its demos not installed";
-  char dir[] = "/tmp/tmop_vertex_moves_XXXXXX";
-  ASSERT_NE(mkdtemp(dir), nullptr);
-  const std::string msh = std::string(dir) + "/p.msh";
-  ASSERT_EQ(testing_recipes::exit_code("gmsh -3 -nt 1 -v 0 -format msh41 " + geo + " -o " + msh +
-                                       " > /dev/null 2>&1"),
-            0);
   Mesh mesh;
-  ASSERT_TRUE(read_mesh(msh, &mesh).ok());
-  testing_recipes::exit_code(std::string("rm -rf ") + dir);
-  mesh.remove_lower_dimensional_cells();
+  const int got = testing_recipes::gmsh_doc_mesh("demos/simple_geo", "pripyrtet", "-3", &mesh);
+  if (got == 1) GTEST_SKIP() << "gmsh or its demos (gmsh-doc) not installed";
+  ASSERT_EQ(got, 0);
   ASSERT_EQ(mesh.num_cells(), 162);
   const GuaranteeBaseline baseline = guarantee_baseline(mesh, 1);
   const std::vector<double> input = mesh.coords;
@@ -130,23 +121,10 @@ TEST(VertexMoves, PripyrtetIsImprovedUnderEveryGuarantee) {
 // cells held; the held vertices then take the good part of their first-round move (tri3 mean
 // 0.8737 -> 0.8746; before, their triangles kept the input's mean exactly).
 TEST(VertexMoves, HeldVerticesOfT6KeepTheGoodPartOfTheirMove) {
-  // t6.geo includes t1.geo, which gmsh-doc ships gzipped.
-  const std::string doc = "/usr/share/doc/gmsh-doc/doc/gmsh/tutorial/";
-  if (!testing_recipes::have_gmsh() || testing_recipes::exit_code("test -f " + doc + "t6.geo") != 0)
-    GTEST_SKIP() << "gmsh or its tutorials not installed";
-  char dir[] = "/tmp/tmop_vertex_moves_XXXXXX";
-  ASSERT_NE(mkdtemp(dir), nullptr);
-  const std::string d = dir, msh = d + "/t6.msh";
-  ASSERT_EQ(testing_recipes::exit_code("cp " + doc + "t6.geo " + d + " && (cp " + doc + "t1.geo " +
-                                       d + " 2>/dev/null || zcat " + doc + "t1.geo.gz > " + d +
-                                       "/t1.geo) && cd " + d +
-                                       " && gmsh -2 -nt 1 -v 0 -save_all -format msh41 t6.geo -o " +
-                                       msh + " > /dev/null 2>&1"),
-            0);
-  Mesh mesh;
-  ASSERT_TRUE(read_mesh(msh, &mesh).ok());
-  testing_recipes::exit_code(std::string("rm -rf ") + dir);
-  mesh.remove_lower_dimensional_cells();
+  Mesh mesh;  // t6.geo includes t1.geo, which gmsh-doc ships gzipped
+  const int got = testing_recipes::gmsh_doc_mesh("tutorial", "t6", "-2 -save_all", &mesh);
+  if (got == 1) GTEST_SKIP() << "gmsh or its tutorials (gmsh-doc) not installed";
+  ASSERT_EQ(got, 0);
   const GuaranteeBaseline baseline = guarantee_baseline(mesh, 1);
   ShapeOptions opt;
   opt.solver.threads = 1;

@@ -24,7 +24,7 @@ namespace tmop {
 // 5M points) the list is the identity and is not stored.
 struct CellPoints {
   std::vector<std::int32_t> offset;  // points are numbered in int32 (point_cell), so are these
-  std::vector<std::int32_t> point;  // empty when identity
+  std::vector<std::int32_t> point;   // empty when identity
   bool identity = false;
   std::int32_t at(std::int64_t k) const {
     return identity ? static_cast<std::int32_t>(k) : point[static_cast<std::size_t>(k)];
