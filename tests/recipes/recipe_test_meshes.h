@@ -40,7 +40,9 @@ constexpr const char* kGmshDoc = "/usr/share/doc/gmsh-doc/doc/gmsh/";
 inline int gmsh_doc_mesh(const std::string& folder, const std::string& name,
                          const std::string& args, Mesh* mesh) {
   const std::string src = std::string(kGmshDoc) + folder + "/";
-  if (!have_gmsh() || exit_code("test -f " + src + name + ".geo") != 0) return 1;
+  if (!have_gmsh() ||
+      exit_code("test -f " + src + name + ".geo -o -f " + src + name + ".geo.gz") != 0)
+    return 1;
   char dir[] = "/tmp/tmop_gmsh_doc_XXXXXX";
   if (!mkdtemp(dir)) return 2;
   const std::string d = dir;

@@ -24,8 +24,66 @@ struct Face {
   std::int32_t mid[4] = {-1, -1, -1, -1};
   std::int32_t centre = -1;
   std::int32_t region = 0;
+  std::int32_t cell = -1;  // surface meshes: the cell itself
   double normal[3] = {0, 0, 0};
 };
+
+// Two faces of a surface mesh sharing an edge that no other face has; `flip`: their corners run
+// along it in the same direction (opposite orders).
+struct FacePair {
+  std::int32_t a, b;
+  bool flip;
+};
+
+// Orientation components of a surface mesh's cells and each cell's parity in its component,
+// by a breadth-first walk across FacePairs (the first cell reached in a component gets +1; a
+// non-orientable component keeps the first parity each cell is given).
+void orient_surface_cells(const Mesh& mesh, const std::vector<Face>& faces,
+                          const std::vector<FacePair>& pairs, BoundaryClassification* out) {
+  const int nf = static_cast<int>(faces.size());
+  std::vector<int> offsets(nf + 1, 0);
+  for (const FacePair& p : pairs) {
+    ++offsets[p.a + 1];
+    ++offsets[p.b + 1];
+  }
+  for (int i = 0; i < nf; ++i) offsets[i + 1] += offsets[i];
+  std::vector<std::pair<std::int32_t, bool>> next(offsets[nf]);
+  {
+    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+    for (const FacePair& p : pairs) {
+      next[fill[p.a]++] = {p.b, p.flip};
+      next[fill[p.b]++] = {p.a, p.flip};
+    }
+  }
+  std::vector<std::int32_t> component(nf, -1);
+  std::vector<std::int8_t> parity(nf, 0);
+  std::vector<std::int32_t> queue;
+  int count = 0;
+  for (int start = 0; start < nf; ++start) {
+    if (component[start] >= 0) continue;
+    component[start] = count;
+    parity[start] = 1;
+    queue.assign(1, start);
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+      const std::int32_t f = queue[q];
+      for (int k = offsets[f]; k < offsets[f + 1]; ++k) {
+        const std::int32_t g = next[k].first;
+        if (component[g] >= 0) continue;
+        component[g] = count;
+        parity[g] = static_cast<std::int8_t>(next[k].second ? -parity[f] : parity[f]);
+        queue.push_back(g);
+      }
+    }
+    ++count;
+  }
+  out->cell_component.assign(mesh.num_cells(), -1);
+  out->cell_parity.assign(mesh.num_cells(), 0);
+  for (int i = 0; i < nf; ++i) {
+    if (faces[i].cell < 0) continue;
+    out->cell_component[faces[i].cell] = component[i];
+    out->cell_parity[faces[i].cell] = parity[i];
+  }
+}
 
 // An edge of the feature graph (boundary edge of a planar mesh, feature edge otherwise).
 struct FeatureEdge {
@@ -306,6 +364,7 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
       }
       if (mesh.cell_type(c) == CellType::kQuad9) f.centre = nodes[8];
       f.region = region_of(mesh, c);
+      f.cell = c;
       faces.push_back(f);
     }
   } else {
@@ -332,6 +391,7 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
   const int nf = static_cast<int>(faces.size());
   std::vector<int> parent(nf);
   std::iota(parent.begin(), parent.end(), 0);
+  std::vector<FacePair> pairs;  // surface meshes: faces sharing an edge of exactly two faces
   {
     struct EdgeRecord {
       std::int32_t lo, hi, face, j;
@@ -349,6 +409,7 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
       }
     }
     std::sort(records.begin(), records.end());
+    const bool orient = dim == 2 && space == 3;
     for (std::size_t i = 0; i < records.size();) {
       std::size_t e = i;
       while (e < records.size() && records[e].lo == records[i].lo &&
@@ -362,6 +423,7 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
         // Consistently oriented neighbours run along the shared edge in opposite directions;
         // surface meshes may not be consistent, so compare the normals up to that flip.
         const bool same_direction = f.corners[records[i].j] == g.corners[records[i + 1].j];
+        if (orient) pairs.push_back({records[i].face, records[i + 1].face, same_direction});
         const double c = vec3::dot(f.normal, g.normal) * (same_direction ? -1 : 1);
         feature = c < cos_feature || (options.region_interfaces && f.region != g.region) ||
                   (f.tag != 0 && g.tag != 0 && f.tag != g.tag);
@@ -476,6 +538,8 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
   // 5. Patches: union-find components of the faces, with their triangles; every node of a face
   // that is neither a corner nor on a curve slides on the face's patch.
   std::vector<int> patch_of_root(nf, -1);
+  if (dim == 2 && space == 3) orient_surface_cells(mesh, faces, pairs, out);
+  if (dim == 2 && space == 3) out->cell_patch.assign(mesh.num_cells(), -1);
   for (int i = 0; i < nf; ++i) {
     const int root = find_root(&parent, i);
     if (patch_of_root[root] < 0) {
@@ -484,7 +548,16 @@ Status classify_boundary(const Mesh& mesh, const ClassifyOptions& options,
     }
     const int patch = patch_of_root[root];
     const Face& f = faces[i];
-    triangulate(f, &out->patches[patch].triangles);
+    auto& triangles = out->patches[patch].triangles;
+    const std::size_t first = triangles.size();
+    triangulate(f, &triangles);
+    if (f.cell >= 0) {
+      out->cell_patch[f.cell] = patch;
+      // A patch's triangles run one way: those of cells ordered the other way are turned.
+      if (out->cell_parity[f.cell] < 0)
+        for (std::size_t t = first; t < triangles.size(); ++t)
+          std::swap(triangles[t][1], triangles[t][2]);
+    }
     auto assign = [&](std::int32_t v) {
       if (v < 0) return;
       if (out->vertex_patch[v] < 0) out->vertex_patch[v] = patch;

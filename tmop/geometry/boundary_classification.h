@@ -20,7 +20,8 @@
 // facet's patch) and mid-face nodes the facet's patch. Curves are the polylines of feature edges
 // between corners (closed loops when they meet none) with the mid-edge nodes in sequence;
 // patches carry their facets split into triangles (original corner order: outward for volume
-// meshes) and a best-fit plane that counts as exact when every vertex lies within 1e-10 x the
+// meshes; surface meshes: turned where a cell's parity is -1, so a patch's triangles run one way)
+// and a best-fit plane that counts as exact when every vertex lies within 1e-10 x the
 // patch size of it; curves count as straight the same way.
 //
 // Failure (Status): a mesh without elements, 1D meshes, 3D elements in 2D space, a feature angle
@@ -77,6 +78,16 @@ struct BoundaryClassification {
   // Per vertex: a patch of a facet the vertex belongs to (any kind, -1 off the facets). Used
   // for normals of corners and curve vertices of surface meshes.
   std::vector<std::int32_t> vertex_patch;
+  // Per cell of a surface mesh (2D cells in 3D): the patch of the cell (-1 for its other cells);
+  // empty for other meshes. A vertex on a curve or corner borders several patches: a cell's
+  // normals come from its own patch, not from the vertex's (vertex_patch).
+  std::vector<std::int32_t> cell_patch;
+  // Per cell of a surface mesh: its orientation component (cells joined across edges of exactly
+  // two cells, whatever their angle) and its order within it: +1, or -1 where the cell's corners
+  // run the other way (a surface a generator oriented on its own). -1 / 0 for other cells;
+  // empty for other meshes.
+  std::vector<std::int32_t> cell_component;
+  std::vector<std::int8_t> cell_parity;
   std::vector<BoundaryCurve> curves;
   std::vector<BoundaryPatch> patches;  // empty for planar (2D) meshes
   int num_feature_edges = 0;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "tmop/element/cell_type.h"
 #include "tmop/geometry/geometry_source.h"
 #include "tmop/geometry/plane_manifold.h"
 #include "tmop/geometry/polyline_manifold.h"
@@ -36,6 +37,61 @@ std::unique_ptr<GeometryManifold> patch_manifold(const Mesh& mesh, const Boundar
 }
 
 }  // namespace
+
+// Per cell of a surface mesh and corner: whether to flip the normal of the cell's patch there.
+// The patch normal is oriented like the vote of the patch's cells around the vertex, each
+// counted by its geometric (right-hand) normal times its parity, and then turned by the cell's
+// own parity, so a surface a generator oriented the other way is not taken for inverted. Only
+// the cell's own patch votes: at a sharp crease (t3's surfaces meet at up to 139 degrees between
+// consistently ordered cells) the other side's cells would outvote it. A fold sharper than the
+// feature angle therefore reads as a crease (like a blade's trailing edge), and the folded cells
+// as valid; a user geometry's normals see it (docs/geometry.md).
+void BoundaryConstraints::orient_cell_normals(const Mesh& mesh, BoundaryConstraints* bc) {
+  const BoundaryClassification& c = bc->classification_;
+  const int nc = mesh.num_cells(), nv = mesh.num_vertices();
+  bc->cell_flip_.assign(nc, 0);
+  if (c.cell_patch.size() != static_cast<std::size_t>(nc) ||
+      c.cell_parity.size() != static_cast<std::size_t>(nc))
+    return;
+  auto corners = [&](int cell) { return cell_info(mesh.cell_type(cell)).num_corners; };
+  std::vector<double> normal(3 * static_cast<std::size_t>(nc), 0.0);
+  std::vector<int> offsets(nv + 1, 0);
+  for (int k = 0; k < nc; ++k) {
+    if (c.cell_patch[k] < 0) continue;
+    const std::int32_t* x = mesh.cell(k);
+    const int m = corners(k);
+    double d1[3], d2[3];
+    vec3::sub(mesh.vertex(x[m == 4 ? 2 : 1]), mesh.vertex(x[0]), d1);
+    vec3::sub(mesh.vertex(x[m == 4 ? 3 : 2]), mesh.vertex(x[m == 4 ? 1 : 0]), d2);
+    vec3::cross(d1, d2, &normal[3 * k]);
+    for (int i = 0; i < m; ++i) ++offsets[x[i] + 1];
+  }
+  for (int v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
+  std::vector<std::int32_t> around(offsets[nv]);
+  {
+    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+    for (int k = 0; k < nc; ++k) {
+      if (c.cell_patch[k] < 0) continue;
+      for (int i = 0; i < corners(k); ++i) around[fill[mesh.cell(k)[i]]++] = k;
+    }
+  }
+  for (int k = 0; k < nc; ++k) {
+    if (c.cell_patch[k] < 0) continue;
+    const GeometryManifold& g = *bc->manifolds_[bc->first_patch_ + c.cell_patch[k]];
+    for (int i = 0; i < corners(k); ++i) {
+      const std::int32_t v = mesh.cell(k)[i];
+      double vote[3] = {0, 0, 0};
+      for (int j = offsets[v]; j < offsets[v + 1]; ++j) {
+        const std::int32_t t = around[j];
+        if (c.cell_patch[t] != c.cell_patch[k]) continue;
+        for (int a = 0; a < 3; ++a) vote[a] += c.cell_parity[t] * normal[3 * t + a];
+      }
+      double n[3];
+      if (g.Normal(mesh.vertex(v), n) && vec3::dot(n, vote) * c.cell_parity[k] < 0)
+        bc->cell_flip_[k] |= std::uint8_t(1u << i);
+    }
+  }
+}
 
 BoundaryConstraints::~BoundaryConstraints() = default;
 
@@ -93,8 +149,10 @@ Status BoundaryConstraints::Build(const Mesh& mesh, const BoundaryOptions& optio
     bc->manifolds_.push_back(patch_manifold(mesh, patch, &local));
   }
   int user = -1;
+  bc->first_patch_ = first_patch;
   if (source.surface) {
     user = static_cast<int>(bc->manifolds_.size());
+    bc->user_slot_ = user;
     bc->manifolds_.push_back(std::move(source.surface));
   }
 
@@ -214,6 +272,7 @@ Status BoundaryConstraints::Build(const Mesh& mesh, const BoundaryOptions& optio
       if (vec3::dot(n, &mesh_normal[3 * v]) < 0) bc->normal_sign_[v] = -1;
     }
   }
+  if (surface_mesh) orient_cell_normals(mesh, bc.get());
   *out = std::move(bc);
   return Status::Ok();
 }
@@ -236,6 +295,20 @@ bool BoundaryConstraints::normal(int vertex, const double* x, double* n) const {
   if (slot < 0 || space_dim_ != 3) return false;
   if (!manifolds_[slot]->Normal(x, n)) return false;
   if (normal_sign_[vertex] < 0) {
+    for (int i = 0; i < 3; ++i) n[i] = -n[i];
+  }
+  return true;
+}
+
+bool BoundaryConstraints::cell_normal(int cell, int corner, const std::int32_t* cell_nodes,
+                                      const double* x, double* n) const {
+  const int vertex = cell_nodes[corner];
+  const std::vector<std::int32_t>& patch_of = classification_.cell_patch;
+  if (space_dim_ != 3 || static_cast<std::size_t>(cell) >= patch_of.size() || patch_of[cell] < 0 ||
+      (user_slot_ >= 0 && normal_slot_[vertex] == user_slot_))
+    return normal(vertex, x, n);
+  if (!manifolds_[first_patch_ + patch_of[cell]]->Normal(x, n)) return false;
+  if (cell_flip_[cell] & (1u << corner)) {
     for (int i = 0; i < 3; ++i) n[i] = -n[i];
   }
   return true;

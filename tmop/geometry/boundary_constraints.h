@@ -92,6 +92,14 @@ class BoundaryConstraints {
   // of a surface mesh and every boundary vertex of a volume mesh. False (n untouched) for
   // interior vertices and 2D meshes.
   bool normal(int vertex, const double* x, double* n) const;
+  // The normal a cell of a surface mesh sees at its corner `corner` (local index), at a point x
+  // near that corner: the user geometry's where the vertex lies on it, otherwise the normal of
+  // the cell's own patch, oriented like that patch's cells around the vertex at Build. A vertex
+  // on a curve or corner borders several patches (at a crease or where surfaces of opposite
+  // orientation meet, their normals disagree): normal() gives one of them, this the cell's.
+  // Falls back to normal() for cells without a patch (volume meshes).
+  bool cell_normal(int cell, int corner, const std::int32_t* cell_nodes, const double* x,
+                   double* n) const;
   // Distance of x from the geometry the vertex is constrained to: the manifold's distance for
   // sliding vertices, the distance from the vertex's original position for fixed ones, 0 for
   // interior vertices.
@@ -106,6 +114,7 @@ class BoundaryConstraints {
 
  private:
   BoundaryConstraints() = default;
+  static void orient_cell_normals(const Mesh& mesh, BoundaryConstraints* bc);
 
   BoundaryClassification classification_;
   std::vector<std::unique_ptr<GeometryManifold>> manifolds_;
@@ -113,6 +122,9 @@ class BoundaryConstraints {
   std::vector<std::int32_t> slot_;         // manifold index per vertex, -1: none
   std::vector<std::int32_t> normal_slot_;  // manifold giving the normal, -1: none
   std::vector<std::int8_t> normal_sign_;   // +1 / -1 to orient it like the mesh
+  std::vector<std::uint8_t> cell_flip_;    // surface meshes: bit k set = flip corner k's normal
+  int first_patch_ = 0;                    // manifold index of patch 0
+  int user_slot_ = -1;                     // manifold index of the user geometry, -1: none
   std::vector<double> original_;           // coordinates at Build, for fixed vertices
   int space_dim_ = 3;
   int num_on_user_geometry_ = 0;

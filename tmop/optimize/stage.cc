@@ -36,8 +36,8 @@ std::string list_cells(const std::vector<int>& cells) {
   return s;
 }
 
-// Surface meshes: per-cell tangent frames from the geometry's normals at the cell's corners
-// (a cell with no geometry normal at its corners: its own plane).
+// Surface meshes: per-cell tangent frames from the geometry's normals at the cell's corners, as
+// the cell's own patch sees them (a cell with no geometry normal at its corners: its own plane).
 void update_surface_frames(const Mesh& mesh, const BoundaryConstraints& boundary, Frames* frames) {
   const int d = mesh.dim();
   for (int c = 0; c < mesh.num_cells(); ++c) {
@@ -47,7 +47,7 @@ void update_surface_frames(const Mesh& mesh, const BoundaryConstraints& boundary
     for (int i = 0; i < k; ++i) {
       const int v = mesh.cell(c)[i];
       double nv[3];
-      if (boundary.normal(v, mesh.vertex(v), nv))
+      if (boundary.cell_normal(c, i, mesh.cell(c), mesh.vertex(v), nv))
         for (int a = 0; a < 3; ++a) n[a] += nv[a];
     }
     if (n[0] == 0 && n[1] == 0 && n[2] == 0) {
