@@ -41,6 +41,9 @@ class PartCallback final : public ceres::IterationCallback {
   }
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     const SolverOptions& so = ctx_.spec->solver;
+    // A cancel (a signal, another thread) ends the part at its last accepted iterate, as it ends
+    // a whole-mesh solve (StageCallback), instead of after the part's last iteration.
+    if (so.progress.cancelled()) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
     if (s.iteration == 0) {
       initial_gradient_ = s.gradient_max_norm;
       return ceres::SOLVER_CONTINUE;
@@ -157,6 +160,12 @@ PartOutcome solve_part(const Mesh& mesh, const std::vector<double>& start, const
     so.max_solver_time_in_seconds = std::max(seconds, 1e-9);
     PartCallback callback(ctx, x, free, free_local, outcome.elements);
     so.callbacks.push_back(&callback);
+    // Cancelled while the problem was built: no Solve (its preprocessing cannot be interrupted);
+    // the part stays at the phase's start.
+    if (spec.solver.progress.cancelled()) {
+      for (const int v : vertices) scratch->local[v] = -1;
+      return outcome;
+    }
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);
     if (summary.termination_type == ceres::FAILURE) {
