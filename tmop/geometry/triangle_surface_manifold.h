@@ -83,6 +83,9 @@ class TriangleSurfaceManifold : public GeometryManifold {
   // vertex's fan that w points into; w is projected onto its plane.
   int leave_vertex(int tri, int corner_index, double* w) const;
 
+  // Smooth shape (triangle_surface_smooth.cc): the vertex normals and patches, built after the
+  // flat triangles; lo / hi: the flat triangles' boxes in, the patches' boxes out.
+  void build_smooth(std::vector<double>* lo, std::vector<double>* hi);
   // Smooth shape: x's triangle, barycentric coordinates lam[3] and point of the patch.
   int locate_smooth(const double* x, double* lam, double* on) const;
   // Solves b_tri(lam) + s n_tri = x from the flat projection; lam clamped to the triangle
