@@ -7,7 +7,8 @@
 //
 // Tags: 2.2 elements carry (physical, elementary) as their first two tags; 4.1 elements belong to
 // an entity (dim, tag) whose physical tags are listed in $Entities. Both map to
-// Mesh::cell_region (the first physical tag; 0 when none) and Mesh::cell_entity.
+// Mesh::cell_region (the first physical tag; 0 when none) and Mesh::cell_entity. A partitioned
+// file's entities ($PartitionedEntities) map to their model entities (msh_sections.h).
 //
 // Writing: tmop numbers nodes 1..N and elements 1..M in mesh order. 4.1 needs $Entities; we write
 // one entity per (dimension, cell_entity) with its bounding box and physical tag, no boundary
@@ -60,6 +61,8 @@ class MshReader {
         v4_ ? read_elements4() : read_elements2();
       } else if (t == "$Entities" && v4_) {
         read_entities();
+      } else if (t == "$PartitionedEntities" && v4_) {
+        read_partitioned_entities(&s_, binary_, &partitioned_);
       } else if (t == "$PhysicalNames") {
         read_physical_names(&s_, mesh_);
       } else if (t == "$Periodic") {
@@ -306,15 +309,22 @@ class MshReader {
       const int nn = cell_num_nodes(type);
       check_count(count, 2 * (1 + nn), 8 * (1 + nn), "element");
       auto it = physical_.find({dim, tag});
-      const std::int32_t phys = it == physical_.end() ? 0 : it->second;
+      std::int32_t phys = it == physical_.end() ? 0 : it->second, entity = tag;
+      bool skip = false;  // a partition's cut or ghost cells (msh_sections.h)
+      if (auto pe = partitioned_.entity.find({dim, tag}); pe != partitioned_.entity.end()) {
+        phys = pe->second.physical;
+        entity = pe->second.parent;
+        skip = pe->second.skip;
+      }
       for (std::int64_t i = 0; i < count; ++i) {
         get_size(0, kMaxInt64, "element tag");
         for (int k = 0; k < nn; ++k) {
           if (!binary_) s_.skip_space();
           const std::size_t p = s_.pos();
-          nodes[k] = node(get_size(1, kMaxInt64, "node tag"), p);
+          const std::int64_t node_tag = get_size(1, kMaxInt64, "node tag");
+          if (!skip) nodes[k] = node(node_tag, p);
         }
-        mesh_->add_cell(type, nodes, phys, tag);
+        if (!skip) mesh_->add_cell(type, nodes, phys, entity);
       }
       seen += count;
     }
@@ -340,6 +350,7 @@ class MshReader {
   std::vector<std::int64_t> tags_;
   NodeMap map_;
   std::map<std::pair<int, int>, std::int32_t> physical_;
+  PartitionedEntities partitioned_;
 };
 
 // ---- writing ------------------------------------------------------------------------------

@@ -126,6 +126,54 @@ void read_periodic(Scanner* s, bool binary, bool v4, const NodeMap& map, Mesh* m
   expect_end(s, "$EndPeriodic");
 }
 
+void read_partitioned_entities(Scanner* s, bool binary, PartitionedEntities* out) {
+  MshValues v(s, binary);
+  if (v.binary()) s->skip_line();
+  *out = PartitionedEntities();
+  out->partitions = static_cast<int>(v.get_size(0, kMaxInt32, "number of partitions"));
+  const std::int64_t ghosts = v.get_size(0, kMaxInt32, "number of ghost entities");
+  v.check_count(ghosts, 4, 8, "ghost entity");
+  std::vector<int> ghost_tags;
+  for (std::int64_t i = 0; i < ghosts; ++i) {
+    ghost_tags.push_back(static_cast<int>(v.get_int(-kMaxInt32, kMaxInt32, "ghost entity tag")));
+    v.get_int(-kMaxInt32, kMaxInt32, "ghost entity partition");
+  }
+  std::int64_t count[4];
+  for (int d = 0; d < 4; ++d) count[d] = v.get_size(0, kMaxInt32, "number of entities");
+  int top = 0;  // ghost entities are of the highest dimension that has entities
+  for (int d = 0; d < 4; ++d) {
+    v.check_count(count[d], 12, 28, "partitioned entity");
+    if (count[d] > 0) top = d;
+    for (std::int64_t i = 0; i < count[d]; ++i) {
+      const int tag = static_cast<int>(v.get_int(-kMaxInt32, kMaxInt32, "entity tag"));
+      const int parent_dim = static_cast<int>(v.get_int(0, 3, "parent dimension"));
+      const int parent = static_cast<int>(v.get_int(-kMaxInt32, kMaxInt32, "parent tag"));
+      const std::int64_t parts = v.get_size(0, kMaxInt32, "number of partitions of the entity");
+      v.check_count(parts, 2, 4, "partition tag");
+      for (std::int64_t k = 0; k < parts; ++k) v.get_int(-kMaxInt32, kMaxInt32, "partition tag");
+      for (int k = 0; k < (d == 0 ? 3 : 6); ++k) v.get_real("entity bounding box");
+      const std::int64_t nphys = v.get_size(0, kMaxInt32, "number of physical tags");
+      v.check_count(nphys, 2, 4, "physical tag");
+      PartitionedEntity e;
+      for (std::int64_t k = 0; k < nphys; ++k) {
+        const std::int64_t phys = v.get_int(-kMaxInt32, kMaxInt32, "physical tag");
+        if (k == 0) e.physical = static_cast<std::int32_t>(phys);
+      }
+      if (d > 0) {
+        const std::int64_t nb = v.get_size(0, kMaxInt32, "number of bounding entities");
+        v.check_count(nb, 2, 4, "bounding entity");
+        for (std::int64_t k = 0; k < nb; ++k)
+          v.get_int(-kMaxInt32, kMaxInt32, "bounding entity tag");
+      }
+      e.parent = parent_dim == d ? parent : tag;
+      e.skip = parent_dim != d;
+      out->entity[{d, tag}] = e;
+    }
+  }
+  for (int tag : ghost_tags) out->entity[{top, tag}].skip = true;
+  expect_end(s, "$EndPartitionedEntities");
+}
+
 void check_msh_names_writable(const Mesh& mesh) {
   for (const PhysicalName& p : mesh.physical_names)
     if (p.name.find_first_of("\"\n\r") != std::string::npos)

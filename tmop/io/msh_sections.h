@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tmop/io/node_map.h"
@@ -108,6 +110,25 @@ struct MshEntity {
 void read_physical_names(Scanner* s, Mesh* mesh);
 // After the "$Periodic" token (nodes already read; map: node tag -> vertex).
 void read_periodic(Scanner* s, bool binary, bool v4, const NodeMap& map, Mesh* mesh);
+
+// 4.1's $PartitionedEntities (gmsh -part N, with or without -part_split): the pieces the
+// partitioner cut the model's entities into. Each partitioned entity (dim, tag) names its model
+// entity (parent dim, parent tag) and its physical tags; pieces of a model entity get its
+// physical and its tag back (Mesh::cell_entity), so a partitioned mesh reads as the model's
+// mesh. Entities the partitioner made for the cuts (parent of a higher dimension: partition
+// interfaces, whose cells the model has not) and ghost entities (copies of a neighbouring
+// partition's cells, -part_ghosts) are marked `skip`: their cells are not read.
+struct PartitionedEntity {
+  std::int32_t physical = 0;  // the first physical tag, 0 when none
+  std::int32_t parent = 0;    // the model entity's tag
+  bool skip = false;
+};
+struct PartitionedEntities {
+  int partitions = 0;
+  std::map<std::pair<int, int>, PartitionedEntity> entity;  // (dim, tag)
+};
+// After the "$PartitionedEntities" token: reads through $EndPartitionedEntities.
+void read_partitioned_entities(Scanner* s, bool binary, PartitionedEntities* out);
 
 // Throws Error("cannot write ...") for a physical name Gmsh cannot read back (a double quote or
 // a line break in it).
