@@ -21,6 +21,7 @@
 #include <stdexcept>
 
 #include "tmop/core/status.h"
+#include "tmop/io/atomic_file.h"
 #include "tmop/io/mesh_io.h"
 #include "tmop/io/mesh_pipe.h"
 
@@ -82,6 +83,24 @@ std::string signal_message(const std::string& path, const char* kind, int sig) {
          std::to_string(sig) + "); the file is damaged or not a valid " + kind + " file";
 }
 
+// The tools' tests (tests/quality/tmop_quality_tool_test.cc) reach the child through the
+// environment: TMOP_ISOLATED_READ_TEST="signal N" raises signal N in the child before it reads,
+// "sleep PIDFILE" writes the child's pid to PIDFILE and sleeps (to signal the tool meanwhile).
+void test_hook_from_environment() {
+  const char* test = std::getenv("TMOP_ISOLATED_READ_TEST");
+  if (!test) return;
+  int sig = 0;
+  char file[256] = {0};
+  if (std::sscanf(test, "signal %d", &sig) == 1) ::raise(sig);
+  if (std::sscanf(test, "sleep %255s", file) == 1) {
+    if (FILE* f = std::fopen(file, "w")) {
+      std::fprintf(f, "%d\n", static_cast<int>(::getpid()));
+      std::fclose(f);
+    }
+    for (int i = 0; i < 600; ++i) ::sleep(1);
+  }
+}
+
 // The child: defaults for every signal, parse, send, _exit. Never returns.
 [[noreturn]] void child_main(int fd, pid_t parent, const std::string& path, io::MeshReader read) {
   for (int sig = 1; sig < NSIG; ++sig)
@@ -104,6 +123,7 @@ std::string signal_message(const std::string& path, const char* kind, int sig) {
     ::dup2(null, 2);
   }
   if (void (*hook)(int) = g_child_hook.load()) hook(fd);
+  test_hook_from_environment();
   bool sent = false;
   try {
     Mesh* mesh = new Mesh;  // never freed: _exit ends the process
@@ -132,6 +152,7 @@ class Child {
   Child(const Child&) = delete;
   Child& operator=(const Child&) = delete;
   int fd() const { return fd_; }
+  void kill() { ::kill(pid_, SIGKILL); }
   void close_fd() {
     if (fd_ >= 0) ::close(fd_);
     fd_ = -1;
@@ -191,12 +212,20 @@ void read_isolated(const std::string& path, MeshReader read, const char* kind, M
   Child child(pid, fds[0]);
   std::string message, damaged;
   char got = 0;
+  // A tool's cancel_on_signal flag (atomic_file.h) raised while the child reads: stop waiting.
+  const auto cancelled = [] { return cancel_signal() != 0; };
   try {
-    got = receive_mesh(child.fd(), mesh, &message);
+    got = receive_mesh(child.fd(), mesh, &message, cancelled);
   } catch (const Error& e) {
     damaged = e.what();
   }
   child.close_fd();
+  if (damaged == "interrupted") {
+    child.kill();
+    child.reap();
+    mesh->clear();
+    throw Error(signal_message(path, kind, cancel_signal()));
+  }
   const int status = child.reap();
   if (WIFSIGNALED(status) || !WIFEXITED(status) || WEXITSTATUS(status) != 0 || !damaged.empty())
     mesh->clear();

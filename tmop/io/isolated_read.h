@@ -28,7 +28,9 @@
 //   the pipe (docs/formats.md, "Process isolation", has the measurement).
 // has_hdf5_signature(path): the file starts with "\x89HDF\r\n\x1a\n" (netCDF-4, CGNS).
 // set_isolated_read_child_hook(hook): tests and the fuzz target only: hook(fd) runs in the child
-//   right after fork, before the read (fd is the pipe to the parent). nullptr: none.
+//   right after fork, before the read (fd is the pipe to the parent). nullptr: none. For the
+//   tools' tests the environment variable TMOP_ISOLATED_READ_TEST does the same: "signal N"
+//   raises signal N in the child, "sleep PIDFILE" writes the child's pid there and sleeps.
 #ifndef TMOP_IO_ISOLATED_READ_H_
 #define TMOP_IO_ISOLATED_READ_H_
 

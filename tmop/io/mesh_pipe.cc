@@ -3,6 +3,7 @@
 #include "tmop/io/mesh_pipe.h"
 
 #include <errno.h>
+#include <poll.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -88,7 +89,7 @@ void send_arrays(Sender* s, const std::vector<DataArray>& arrays) {
 
 class Receiver {
  public:
-  explicit Receiver(int fd) : fd_(fd) {}
+  Receiver(int fd, bool (*stop)()) : fd_(fd), stop_(stop) {}
   void bytes(void* data, std::size_t n) {
     char* p = static_cast<char*>(data);
     while (n > 0) {
@@ -142,6 +143,12 @@ class Receiver {
  private:
   ssize_t read_some() {
     for (;;) {
+      if (stop_) {
+        pollfd p = {fd_, POLLIN, 0};
+        const int n = ::poll(&p, 1, 200);
+        if (n == 0 && stop_()) throw Error("interrupted");
+        if (n <= 0) continue;  // a timeout or EINTR: ask again
+      }
       const ssize_t r = ::read(fd_, buf_, sizeof buf_);
       if (r >= 0) return r;
       if (errno != EINTR) bad(std::string("read error (") + std::strerror(errno) + ")");
@@ -154,6 +161,7 @@ class Receiver {
     end_ = static_cast<std::size_t>(r);
   }
   int fd_;
+  bool (*stop_)();
   char buf_[1 << 16];
   std::size_t at_ = 0, end_ = 0;
 };
@@ -270,8 +278,8 @@ bool send_message(int fd, char kind, const std::string& message) {
   return s.flush();
 }
 
-char receive_mesh(int fd, Mesh* mesh, std::string* message) {
-  Receiver r(fd);
+char receive_mesh(int fd, Mesh* mesh, std::string* message, bool (*stop)()) {
+  Receiver r(fd, stop);
   char magic[sizeof kMagic];
   r.bytes(magic, sizeof magic);
   if (std::memcmp(magic, kMagic, sizeof kMagic) != 0) Receiver::bad("not a mesh stream");

@@ -31,7 +31,9 @@ namespace io {
 bool send_mesh(int fd, const Mesh& mesh);
 bool send_message(int fd, char kind, const std::string& message);  // kind 'E', 'A' or 'X'
 
-char receive_mesh(int fd, Mesh* mesh, std::string* message);
+// stop (may be null) is asked every 200 ms while no data comes; when it returns true,
+// receive_mesh throws Error("interrupted").
+char receive_mesh(int fd, Mesh* mesh, std::string* message, bool (*stop)() = nullptr);
 
 }  // namespace io
 }  // namespace tmop
