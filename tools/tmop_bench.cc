@@ -75,6 +75,9 @@ DEFINE_string(task, "shape", "read, quality, shape, untangle, evaluate, floor or
 DEFINE_int32(threads, 0, "Threads for Ceres (0 = all hardware threads). floor is one thread.");
 DEFINE_int32(part_size, -1,
              "Partitioned stages: elements per part; 0: one problem; -1: the default.");
+DEFINE_bool(isolated_hdf5_reads, true,
+            "Read .cgns and netCDF-4 .exo files in a child process, as every tool does (false: in "
+            "the process, to measure what the isolation costs: docs/formats.md).");
 DEFINE_int32(repeat, 1, "Run the task this many times; times are reported per run.");
 DEFINE_string(json, "", "Also write the JSON record to this file.");
 DEFINE_string(reference, "", "Reference mesh: targets are its Jacobians (--target=reference).");
@@ -462,6 +465,7 @@ int main(int argc, char** argv) {
       "reproducible speed/scale runs with a JSON record\n"
       "  tmop_bench --input=MESH --task=shape|untangle|read|quality|evaluate|floor|perturb");
   tmop_tools::parse_flags(&argc, &argv);
+  tmop::set_isolated_hdf5_reads(FLAGS_isolated_hdf5_reads);
   tmop::remove_temporaries_on_signal("tmop_bench");
   FLAGS_minloglevel = FLAGS_verbose ? 1 : 3;
   google::InitGoogleLogging(argv[0]);

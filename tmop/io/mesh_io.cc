@@ -16,6 +16,7 @@
 
 #include "tmop/io/atomic_file.h"
 #include "tmop/io/formats.h"
+#include "tmop/io/isolated_read.h"
 #include "tmop/io/node_order.h"
 #include "tmop/io/scanner.h"
 
@@ -119,8 +120,14 @@ Status read_mesh(const std::string& path, Mesh* mesh, SurfaceRepair* repair) {
       return Status::Failure(path +
                              ": tmop writes .pvtu but does not read it (read its .vtu pieces)");
     if (is_exodus_ext(ext) || ext == "cgns") {
-      // libexodusii and libcgns read the file by its name.
-      if (ext == "cgns")
+      // libexodusii and libcgns read the file by its name; what goes to libhdf5 may be parsed
+      // in a child process (isolated_read.h).
+      const bool isolate = isolated_hdf5_reads() && (ext == "cgns" || io::has_hdf5_signature(path));
+      if (isolate && ext == "cgns")
+        io::read_isolated(path, io::read_cgns, "CGNS", mesh);
+      else if (isolate)
+        io::read_isolated(path, io::read_exodus, "netCDF-4 (HDF5) Exodus II", mesh);
+      else if (ext == "cgns")
         io::read_cgns(path, mesh);
       else
         io::read_exodus(path, mesh);

@@ -69,6 +69,22 @@ struct WriteOptions {
 
 Status read_mesh(const std::string& path, Mesh* mesh);
 
+// Process isolation of the reads that hand file bytes to libhdf5: .cgns files, and .exo/.e files
+// that start with the HDF5 signature (netCDF-4). libhdf5 does not validate a damaged file before
+// it uses it (fuzzing made libhdf5 1.10.8 free an invalid pointer: docs/fuzzing.md), so with
+// isolation on such a file is parsed in a forked child process that sends the mesh back through a
+// pipe (io/isolated_read.h), and a crash there is the one-line Status "FILE: the HDF5 library
+// crashed reading this file (SIGABRT, signal 6); the file is damaged or not a valid CGNS file"
+// instead of the end of the program. The mesh read is the same, field by field.
+// Off by default in the library (fork in a library can surprise a program: its other threads do
+// not exist in the child, so a lock one of them holds inside libhdf5 would hang the child); the
+// tmop tools turn it on. Process-wide (an atomic flag). isolated_hdf5_reads() is the effective
+// setting: false whatever was set when MPI is in use (started by mpirun: OMPI_COMM_WORLD_SIZE,
+// PMIX_RANK, PMI_SIZE or PMI_RANK set; or MPI_Initialized true in a program linked with MPI), since
+// OpenMPI does not support fork. Cost: docs/formats.md, "Process isolation".
+void set_isolated_hdf5_reads(bool on);
+bool isolated_hdf5_reads();
+
 // For reference geometry (a surface to slide on, not a mesh to optimise): the .stl, .obj, .off
 // and .ply readers drop faces with a repeated corner (degenerate facets) and split faces of
 // more than 4 corners into triangle fans instead of refusing the file, and count both here.

@@ -19,9 +19,11 @@
 //   check_exodus_file(path): what read_exodus calls before ex_open. A file that starts with the
 //     HDF5 signature (netCDF-4, "\x89HDF\r\n\x1a\n"; meshio 5 writes these) is passed on
 //     unchecked: libhdf5 parses it as it parses every CGNS file, and read_exodus bounds every
-//     count it allocates from by the file size. That is the residual risk of the format: fuzzing
+//     count it allocates from by the file size. That is the residual risk of the format (fuzzing
 //     found libhdf5 1.10.8 freeing an invalid pointer on a damaged group of such a file inside
-//     nc_open (tests/fuzz/unfixed/exo/hdf5_invalid_free.exo, docs/fuzzing.md), and the layout
+//     nc_open: tests/fuzz/regressions/exo/hdf5_invalid_free.exo, docs/fuzzing.md), which the
+//     isolated read (isolated_read.h: the tools read such files in a child process) turns into a
+//     one-line error; the layout
 //     check below is not applied to netCDF-4 files. Anything else must be a
 //     classic file that read_netcdf_header accepts and whose Exodus variables have the shapes
 //     libexodusii assumes when it reads them into buffers sized from dimensions: coordx/coordy/

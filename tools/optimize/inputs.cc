@@ -1,9 +1,11 @@
 // tools/optimize/inputs.cc: tmop_optimize's inputs, read and checked before any work.
 #include "tools/optimize/inputs.h"
 
+#include <csignal>
 #include <cstdio>
 #include <string>
 
+#include "tmop/io/atomic_file.h"
 #include "tmop/io/node_list.h"
 #include "tmop/mesh/validate.h"
 #include "tmop/target/composed_target.h"
@@ -16,6 +18,13 @@ using namespace tmop;
 int load_inputs(bool composed, RecipeOptions* o, Inputs* in) {
   Mesh& mesh = in->mesh;
   Status s = read_mesh(FLAGS_input, &mesh);
+  // A signal while a child process read the input (mesh_io.h, isolated reads) ends that read.
+  if (!s.ok() && cancel_signal() != 0) {
+    std::fprintf(stderr,
+                 "tmop_optimize: interrupted by %s while reading the input; nothing written\n",
+                 cancel_signal() == SIGTERM ? "SIGTERM" : "SIGINT");
+    return 130;
+  }
   if (!s.ok()) return fail(2, s.message());
   s = validate_mesh(mesh);
   if (!s.ok()) return fail(2, FLAGS_input + ": " + s.message());
