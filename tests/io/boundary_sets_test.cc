@@ -175,6 +175,170 @@ TEST(ExodusSides, RoundTripWritesSideSetsAndReadsNoDuplicates) {
   }
 }
 
+// A Cubit-style file: element blocks of volume (or 2D) cells only and side sets naming their
+// sides, written with libexodusii. 3D: a unit-cube HEX8, a TETRA, a WEDGE, a PYRAMID and a HEX20
+// (Exodus node order) at x = 0, 2, 4, 6, 8; 2D: a QUAD4 and a TRI3. Side set 10 b + s holds side
+// s of element b and is named "bB_sS". bad_elem / bad_side replace the first entry.
+struct CubitElement {
+  const char* type;
+  std::vector<V3> nodes;
+};
+std::vector<CubitElement> cubit_elements(bool two_d) {
+  const std::vector<V3> cube = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  if (two_d)
+    return {{"QUAD4", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}},
+            {"TRI3", {{2, 0, 0}, {3, 0, 0}, {2, 1, 0}}}};
+  std::vector<CubitElement> e = {
+      {"HEX8", cube},
+      {"TETRA", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}},
+      {"WEDGE", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}},
+      {"PYRAMID", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1}}},
+      {"HEX20", cube}};
+  // HEX20's mid-edge nodes 9..20 (Exodus II manual): 1-2 2-3 3-4 4-1, 1-5 2-6 3-7 4-8, 5-6 6-7
+  // 7-8 8-5.
+  const int mid[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 5},
+                          {2, 6}, {3, 7}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
+  for (const auto& m : mid) {
+    V3 p;
+    for (int k = 0; k < 3; ++k) p[k] = 0.5 * (cube[m[0]][k] + cube[m[1]][k]);
+    e[4].nodes.push_back(p);
+  }
+  for (std::size_t b = 0; b < e.size(); ++b)
+    for (V3& p : e[b].nodes) p[0] += 2.0 * b;
+  return e;
+}
+
+// The outward unit normals of the sides as the Exodus II manual draws them (side 1 first).
+std::vector<V3> manual_normals(const std::string& type) {
+  const double r2 = std::sqrt(0.5), r3 = std::sqrt(1.0 / 3), r5 = std::sqrt(0.2);
+  if (type == "HEX8" || type == "HEX20")
+    return {{0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, -1}, {0, 0, 1}};
+  if (type == "TETRA") return {{0, -1, 0}, {r3, r3, r3}, {-1, 0, 0}, {0, 0, -1}};
+  if (type == "WEDGE") return {{0, -1, 0}, {r2, r2, 0}, {-1, 0, 0}, {0, 0, -1}, {0, 0, 1}};
+  if (type == "PYRAMID")
+    return {{0, -2 * r5, r5}, {2 * r5, 0, r5}, {0, 2 * r5, r5}, {-2 * r5, 0, r5}, {0, 0, -1}};
+  if (type == "QUAD4") return {{0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}};
+  return {{0, -1, 0}, {r2, r2, 0}, {-1, 0, 0}};  // TRI3
+}
+
+std::string write_cubit(const std::string& path, bool two_d, int bad_elem = 0, int bad_side = 0) {
+  const std::vector<CubitElement> elems = cubit_elements(two_d);
+  std::vector<double> x, y, z;
+  for (const CubitElement& e : elems)
+    for (const V3& p : e.nodes) x.push_back(p[0]), y.push_back(p[1]), z.push_back(p[2]);
+  int nss = 0;
+  for (const CubitElement& e : elems) nss += static_cast<int>(manual_normals(e.type).size());
+  int ws = 8, io = 8;
+  const int f = ex_create(path.c_str(), EX_CLOBBER, &ws, &io);
+  if (f < 0) return "ex_create failed";
+  const int nb = static_cast<int>(elems.size());
+  if (ex_put_init(f, "cubit-style", two_d ? 2 : 3, static_cast<int>(x.size()), nb, nb, 0, nss) <
+          0 ||
+      ex_put_coord(f, x.data(), y.data(), two_d ? nullptr : z.data()) < 0)
+    return "header";
+  int next = 1;
+  std::vector<std::string> block_names, set_names;
+  for (int b = 0; b < nb; ++b) {
+    const int n = static_cast<int>(elems[b].nodes.size());
+    std::vector<int> conn;
+    for (int i = 0; i < n; ++i) conn.push_back(next++);
+    if (ex_put_block(f, EX_ELEM_BLOCK, b + 1, elems[b].type, 1, n, 0, 0, 0) < 0 ||
+        ex_put_conn(f, EX_ELEM_BLOCK, b + 1, conn.data(), nullptr, nullptr) < 0)
+      return "block";
+    block_names.push_back(std::string("vol_") + elems[b].type);
+    for (std::size_t s = 1; s <= manual_normals(elems[b].type).size(); ++s) {
+      const int id = 10 * (b + 1) + static_cast<int>(s);
+      int elem = b + 1, side = static_cast<int>(s);
+      if (set_names.empty() && bad_elem) elem = bad_elem;
+      if (set_names.empty() && bad_side) side = bad_side;
+      if (ex_put_set_param(f, EX_SIDE_SET, id, 1, 0) < 0 ||
+          ex_put_set(f, EX_SIDE_SET, id, &elem, &side) < 0)
+        return "side set";
+      set_names.push_back("b" + std::to_string(b + 1) + "_s" + std::to_string(s));
+    }
+  }
+  std::vector<char*> bp, sp;
+  for (std::string& n : block_names) bp.push_back(&n[0]);
+  for (std::string& n : set_names) sp.push_back(&n[0]);
+  if (ex_put_names(f, EX_ELEM_BLOCK, bp.data()) < 0 || ex_put_names(f, EX_SIDE_SET, sp.data()) < 0)
+    return "names";
+  ex_close(f);
+  return "";
+}
+
+// Each side becomes a boundary cell of its set's region and name, with the manual's outward
+// normal; HEX20's sides are quad8 with their mid-edge nodes at the edge midpoints.
+TEST(ExodusSides, CubitStyleFileGivesNamedOutwardBoundaryCells) {
+  for (bool two_d : {false, true}) {
+    const std::string path = test::temp_dir() + (two_d ? "/cubit2.exo" : "/cubit3.exo");
+    ASSERT_EQ(write_cubit(path, two_d), "");
+    Mesh m;
+    const Status st = read_mesh(path, &m);
+    ASSERT_TRUE(st.ok()) << st.message();
+    const std::vector<CubitElement> elems = cubit_elements(two_d);
+    const int nb = static_cast<int>(elems.size()), nd = two_d ? 2 : 3;
+    int sides = 0;
+    for (const CubitElement& e : elems) sides += static_cast<int>(manual_normals(e.type).size());
+    ASSERT_EQ(m.num_cells(), nb + sides);
+    EXPECT_EQ(m.dim(), nd);
+    std::vector<int> seen(10 * (nb + 1), 0);
+    for (int c = nb; c < m.num_cells(); ++c) {
+      const int r = m.cell_region[c], b = r / 10, s = r % 10;
+      ASSERT_TRUE(b >= 1 && b <= nb && s >= 1) << r;
+      ++seen[r];
+      const std::vector<V3> want = manual_normals(elems[b - 1].type);
+      ASSERT_LE(s, static_cast<int>(want.size()));
+      const std::string* name = m.physical_name(nd - 1, r);
+      ASSERT_NE(name, nullptr) << r;
+      EXPECT_EQ(*name, "b" + std::to_string(b) + "_s" + std::to_string(s));
+      const CellInfo& info = cell_info(m.cell_types[c]);
+      EXPECT_EQ(info.dim, nd - 1);
+      const bool quadratic = std::string(elems[b - 1].type) == "HEX20";
+      EXPECT_EQ(m.cell_types[c], quadratic ? CellType::kQuad8 : cell_info(m.cell_types[c]).linear);
+      const V3 n = side_normal(m, m.cell(c), info.num_corners, {0, 0, 1});
+      EXPECT_GT(dot(n, want[s - 1]), 1 - 1e-9) << elems[b - 1].type << " side " << s << ": normal "
+                                               << n[0] << " " << n[1] << " " << n[2];
+      if (quadratic)
+        for (int j = 0; j < 4; ++j) {
+          const V3 a = point(m, m.cell(c)[j]), e = point(m, m.cell(c)[4 + j]);
+          const V3 b2 = point(m, m.cell(c)[(j + 1) % 4]);
+          for (int k = 0; k < 3; ++k) EXPECT_EQ(e[k], 0.5 * (a[k] + b2[k])) << "side " << s;
+        }
+    }
+    for (int b = 1; b <= nb; ++b)
+      for (std::size_t s = 1; s <= manual_normals(elems[b - 1].type).size(); ++s)
+        EXPECT_EQ(seen[10 * b + s], 1) << b << " " << s;
+    // Written back by tmop and read again: the same mesh (now the sides come from blocks too).
+    const std::string again = test::temp_dir() + (two_d ? "/again2.exo" : "/again3.exo");
+    ASSERT_TRUE(write_mesh(again, m).ok());
+    Mesh back;
+    ASSERT_TRUE(read_mesh(again, &back).ok());
+    EXPECT_EQ(tmop_fuzz::mesh_difference(m, back, tmop_fuzz::holds("exo", false)), "");
+  }
+}
+
+TEST(ExodusSides, BadElementOrSideIsAOneLineErrorNamingFileAndSet) {
+  struct Bad {
+    int elem, side;
+    std::string want;
+  };
+  const Bad bad[] = {
+      {99, 0, "side set 11, entry 1: element 99 is out of range 1..5"},
+      {-3, 0, "side set 11, entry 1: element -3 is out of range 1..5"},
+      {0, 7, "side set 11, entry 1: side 7 is out of range 1..6 of element 1 (hex8)"},
+      {0, -1, "side set 11, entry 1: side -1 is out of range 1..6"}};
+  for (const Bad& b : bad) {
+    const std::string path = test::temp_dir() + "/bad.exo";
+    ASSERT_EQ(write_cubit(path, false, b.elem, b.side), "");
+    Mesh m;
+    const Status st = read_mesh(path, &m);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.message().find(path + ": " + b.want), std::string::npos) << st.message();
+    EXPECT_EQ(st.message().find('\n'), std::string::npos);
+  }
+}
+
 #endif  // TMOP_TEST_WITH_EXODUS
 
 }  // namespace
