@@ -341,5 +341,160 @@ TEST(ExodusSides, BadElementOrSideIsAOneLineErrorNamingFileAndSet) {
 
 #endif  // TMOP_TEST_WITH_EXODUS
 
+#ifdef TMOP_TEST_WITH_CGNS
+
+struct CgBc {
+  std::string name;
+  CGNS_ENUMT(PointSetType_t) type;
+  CGNS_ENUMT(GridLocation_t) location;
+};
+std::vector<CgBc> cgns_bcs(const std::string& path) {
+  std::vector<CgBc> out;
+  int fn = 0, n = 0;
+  if (cg_open(path.c_str(), CG_MODE_READ, &fn) != CG_OK) return out;
+  cg_nbocos(fn, 1, 1, &n);
+  for (int bc = 1; bc <= n; ++bc) {
+    char name[33] = {0};
+    CGNS_ENUMT(BCType_t) bt;
+    CgBc b;
+    cgsize_t np = 0, nl = 0;
+    int ni[3], nds = 0;
+    CGNS_ENUMT(DataType_t) dt;
+    cg_boco_info(fn, 1, 1, bc, name, &bt, &b.type, &np, ni, &nl, &dt, &nds);
+    cg_boco_gridlocation_read(fn, 1, 1, bc, &b.location);
+    b.name = name;
+    if (bt == CGNS_ENUMV(FamilySpecified)) out.push_back(b);
+  }
+  cg_close(fn);
+  return out;
+}
+
+// tmop -> tmop keeps the cells and regions; the BCs name the side regions whose cells are in
+// sections of several types (so no section carries the name) and the file holds one
+// FamilySpecified BC per boundary region, PointRange for the contiguous one.
+TEST(CgnsBcs, RoundTripWritesOneBcPerBoundaryRegionAndNamesRegions) {
+  for (int nd : {3, 2}) {
+    const Mesh a =
+        with_sides(nd == 3 ? std::vector<CellType>(std::begin(kVolumeTypes), std::end(kVolumeTypes))
+                           : std::vector<CellType>(std::begin(kAreaTypes), std::end(kAreaTypes)),
+                   nd);
+    const std::string path = test::temp_dir() + "/s" + std::to_string(nd) + ".cgns";
+    ASSERT_TRUE(write_mesh(path, a).ok());
+    const std::vector<CgBc> bcs = cgns_bcs(path);
+    const int sides = nd == 3 ? 6 : 4;
+    ASSERT_EQ(bcs.size(), static_cast<std::size_t>(sides + 1));
+    for (int s = 1; s <= sides; ++s) {
+      EXPECT_EQ(bcs[s - 1].name, "side_" + std::to_string(s));
+      EXPECT_EQ(bcs[s - 1].type, CGNS_ENUMV(PointList));
+    }
+    EXPECT_EQ(bcs[sides].name, "loose");
+    EXPECT_EQ(bcs[sides].type, CGNS_ENUMV(PointRange));
+    for (const CgBc& b : bcs)
+      EXPECT_EQ(b.location, nd == 3 ? CGNS_ENUMV(FaceCenter) : CGNS_ENUMV(EdgeCenter));
+    Mesh b;
+    const Status st = read_mesh(path, &b);
+    ASSERT_TRUE(st.ok()) << st.message();
+    EXPECT_EQ(tmop_fuzz::mesh_difference(a, b, tmop_fuzz::holds("cgns", false)), "") << nd;
+    for (int s = 1; s <= sides; ++s) {
+      const std::string* name = b.physical_name(nd - 1, 100 + s);
+      ASSERT_NE(name, nullptr) << s;
+      EXPECT_EQ(*name, "side_" + std::to_string(s));
+    }
+    ASSERT_NE(b.physical_name(nd - 1, 301), nullptr);
+    EXPECT_EQ(*b.physical_name(nd - 1, 301), "loose");
+  }
+}
+
+// A CFD-style file written with libcgns: a HEXA_8 section "fluid" (element 1), all six faces in
+// one QUAD_4 section "QuadElements" (elements 2..7, face k = Exodus side k of the cube), and BCs
+// "bottom" (PointList {6}: z = 0), "others" (PointRange 2..5 and 7: listed as a PointList) and a
+// vertex BC "corners" that is ignored. bad_point replaces bottom's element.
+std::string write_cfd(const std::string& path, cgsize_t bad_point = 0,
+                      CGNS_ENUMT(GridLocation_t) loc = CGNS_ENUMV(FaceCenter)) {
+  int fn = 0, B = 0, Z = 0, S = 0, C = 0, BC = 0;
+  if (cg_open(path.c_str(), CG_MODE_WRITE, &fn) != CG_OK) return cg_get_error();
+  cg_base_write(fn, "Base", 3, 3, &B);
+  cgsize_t size[3] = {8, 1, 0};
+  cg_zone_write(fn, B, "blk", size, CGNS_ENUMV(Unstructured), &Z);
+  const double x[8] = {0, 1, 1, 0, 0, 1, 1, 0}, y[8] = {0, 0, 1, 1, 0, 0, 1, 1},
+               z[8] = {0, 0, 0, 0, 1, 1, 1, 1};
+  cg_coord_write(fn, B, Z, CGNS_ENUMV(RealDouble), "CoordinateX", x, &C);
+  cg_coord_write(fn, B, Z, CGNS_ENUMV(RealDouble), "CoordinateY", y, &C);
+  cg_coord_write(fn, B, Z, CGNS_ENUMV(RealDouble), "CoordinateZ", z, &C);
+  const cgsize_t hex[8] = {1, 2, 3, 4, 5, 6, 7, 8};
+  const cgsize_t quads[24] = {1, 2, 6, 5, 2, 3, 7, 6, 3, 4, 8, 7,
+                              1, 5, 8, 4, 1, 4, 3, 2, 5, 6, 7, 8};
+  cg_section_write(fn, B, Z, "fluid", CGNS_ENUMV(HEXA_8), 1, 1, 0, hex, &S);
+  cg_section_write(fn, B, Z, "QuadElements", CGNS_ENUMV(QUAD_4), 2, 7, 0, quads, &S);
+  const cgsize_t bottom[1] = {bad_point ? bad_point : 6}, others[5] = {2, 3, 4, 5, 7};
+  const cgsize_t corners[2] = {1, 2};
+  if (cg_boco_write(fn, B, Z, "bottom", CGNS_ENUMV(BCWall), CGNS_ENUMV(PointList), 1, bottom,
+                    &BC) != CG_OK ||
+      cg_boco_gridlocation_write(fn, B, Z, BC, loc) != CG_OK ||
+      cg_boco_write(fn, B, Z, "others", CGNS_ENUMV(BCFarfield), CGNS_ENUMV(PointList), 5, others,
+                    &BC) != CG_OK ||
+      cg_boco_gridlocation_write(fn, B, Z, BC, CGNS_ENUMV(FaceCenter)) != CG_OK ||
+      cg_boco_write(fn, B, Z, "corners", CGNS_ENUMV(BCWall), CGNS_ENUMV(PointList), 2, corners,
+                    &BC) != CG_OK)
+    return cg_get_error();
+  cg_close(fn);
+  return "";
+}
+
+TEST(CgnsBcs, CfdStyleBcsNameAndSplitTheBoundarySection) {
+  const std::string path = test::temp_dir() + "/cfd.cgns";
+  ASSERT_EQ(write_cfd(path), "");
+  Mesh m;
+  const Status st = read_mesh(path, &m);
+  ASSERT_TRUE(st.ok()) << st.message();
+  ASSERT_EQ(m.num_cells(), 7);
+  int bottom = 0, others = 0;
+  for (int c = 1; c < 7; ++c) {
+    const std::string* name = m.physical_name(2, m.cell_region[c]);
+    ASSERT_NE(name, nullptr) << c;
+    const V3 n = side_normal(m, m.cell(c), 4, {0, 0, 1});
+    if (*name == "bottom") {
+      ++bottom;
+      EXPECT_EQ(c, 5);  // element 6
+      EXPECT_LT(n[2], -0.999);
+    } else {
+      EXPECT_EQ(*name, "others");
+      ++others;
+    }
+  }
+  EXPECT_EQ(bottom, 1);
+  EXPECT_EQ(others, 5);
+  EXPECT_NE(m.cell_region[5], m.cell_region[1]);
+}
+
+TEST(CgnsBcs, BadBcIsAOneLineErrorNamingFileAndBc) {
+  struct Bad {
+    cgsize_t point;
+    std::string want;
+  };
+  const Bad bad[] = {
+      {99, "zone 1, boundary condition 1 'bottom': element 99 is in no element section"},
+      {-1, "zone 1, boundary condition 1 'bottom': element -1 is in no element section"},
+      {1, "zone 1, boundary condition 1 'bottom': element 1 is a hex8, not a boundary cell"}};
+  for (const Bad& b : bad) {
+    const std::string path = test::temp_dir() + "/bad.cgns";
+    ASSERT_EQ(write_cfd(path, b.point), "");
+    Mesh m;
+    const Status st = read_mesh(path, &m);
+    ASSERT_FALSE(st.ok());
+    EXPECT_NE(st.message().find(path + ": " + b.want), std::string::npos) << st.message();
+    EXPECT_EQ(st.message().find('\n'), std::string::npos);
+  }
+  // A vertex-located bottom names nothing: its face keeps the section's region and name.
+  const std::string path = test::temp_dir() + "/vertex.cgns";
+  ASSERT_EQ(write_cfd(path, 6, CGNS_ENUMV(Vertex)), "");
+  Mesh m;
+  ASSERT_TRUE(read_mesh(path, &m).ok());
+  ASSERT_NE(m.physical_name(2, m.cell_region[5]), nullptr);
+  EXPECT_EQ(*m.physical_name(2, m.cell_region[5]), "QuadElements");
+}
+
+#endif  // TMOP_TEST_WITH_CGNS
+
 }  // namespace
 }  // namespace tmop

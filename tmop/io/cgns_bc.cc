@@ -91,7 +91,7 @@ void name_cells(const std::string& name, int dim, std::vector<int>* cells, Mesh*
     max_region = std::max(max_region, mesh->cell_region[c]);
   }
   if (one && in_region == cells->size()) {
-    if (!mesh->physical_name(dim, region)) mesh->set_physical_name(dim, region, name);
+    mesh->set_physical_name(dim, region, name);
     return;
   }
   for (int c : *cells) mesh->cell_region[c] = max_region + 1;

@@ -13,7 +13,7 @@
 // Read: BC_t nodes with an element location (FaceCenter, EdgeCenter, or the ElementRange /
 // ElementList point sets) name the regions of the cells they list, which must be cells of
 // dimension base cell dimension - 1 of the zone's sections: when they are exactly the cells of
-// one region of that dimension, that region gets the BC's name if it has none; otherwise the
+// one region of that dimension, that region takes the BC's name (over a section's); otherwise the
 // listed cells move to a new region (the largest + 1) named by the BC. No cells are created (CGNS
 // boundary faces are always element sections). A BC named "Region_R" names nothing. Vertex and
 // cell-centred BCs are ignored.
