@@ -496,5 +496,40 @@ TEST(CgnsBcs, BadBcIsAOneLineErrorNamingFileAndBc) {
 
 #endif  // TMOP_TEST_WITH_CGNS
 
+#if defined(TMOP_TEST_WITH_EXODUS) && defined(TMOP_TEST_WITH_CGNS)
+// VTK's vtkExodusIIReader (its own side table) and vtkCGNSReader (LoadBndPatch) see every side
+// set and BC patch by name with the cells, point sets and (side sets) orientation of the boundary
+// blocks of that name (vtk_boundary_sets_check.py). pyramid14 has no VTK type.
+TEST(BoundarySets, VtkReadsSideSetsAndBcPatchesWithTheirNames) {
+  if (!test::have_python_module("vtk")) GTEST_SKIP() << "python3-vtk9 not installed";
+  for (int nd : {3, 2}) {
+    std::vector<CellType> types(std::begin(kAreaTypes), std::end(kAreaTypes));
+    if (nd == 3) types.assign(std::begin(kVolumeTypes), std::end(kVolumeTypes) - 1);
+    const Mesh m = with_sides(types, nd);
+    const std::string dir = test::temp_dir();
+    ASSERT_TRUE(write_mesh(dir + "/v.exo", m).ok());
+    ASSERT_TRUE(write_mesh(dir + "/v.cgns", m).ok());
+    std::string out;
+    ASSERT_EQ(
+        test::run(std::string("/usr/bin/python3 ") + TMOP_SOURCE_DIR +
+                      "/tests/io/vtk_boundary_sets_check.py " + dir + "/v.exo " + dir + "/v.cgns",
+                  &out),
+        0)
+        << out;
+    const std::vector<int> counts =
+        nd == 3 ? std::vector<int>{10, 10, 10, 10, 8, 3} : std::vector<int>{5, 5, 5, 3};
+    for (std::size_t s = 1; s <= counts.size(); ++s)
+      for (const char* kind : {"sideset", "patch"})
+        EXPECT_NE(out.find(std::string(kind) + " side_" + std::to_string(s) + " " +
+                           std::to_string(counts[s - 1]) + "\n"),
+                  std::string::npos)
+            << nd << " " << kind << " " << s << "\n"
+            << out;
+    EXPECT_NE(out.find("patch loose 1\n"), std::string::npos) << out;
+    EXPECT_EQ(out.find("sideset loose"), std::string::npos) << out;
+  }
+}
+#endif
+
 }  // namespace
 }  // namespace tmop
