@@ -12,10 +12,10 @@
 // cells, region) (Mesh::physical_names). Boundary conditions (ZoneBC_t) name boundary regions
 // on read and are written for every boundary region (cgns_bc.h). Flow solutions are not read.
 // Write: one base "Base", one zone "Zone1", one section per (region, type), named
-// "Region_R_TYPE", element numbers 1..N in section order; coordinates as RealDouble. A region
-// with a physical name whose cells are of one type is one section named by it instead (CGNS node
-// names: 1 to 32 characters, no '/'; the first of equal names only), with the region in a
-// Descriptor "tmop_region"; other names are not written.
+// "Region_R_TYPE", the elements' sections first, element numbers 1..N in section order; coordinates
+// as RealDouble. A region with a physical name whose cells are of one type is one section named by
+// it instead (CGNS node names: 1 to 32 characters, no '/'; the first of equal names only), with the
+// region in a Descriptor "tmop_region"; other names are not written.
 //
 // Types and node order (CGNS SIDS, "Unstructured Grid Element Numbering Conventions"): NODE,
 // BAR_2/3, TRI_3/6, QUAD_4/8/9, TETRA_4/10, PYRA_5/13/14, PENTA_6/15/18, HEXA_8/20/27, with the
@@ -263,12 +263,17 @@ std::string section_name(const Mesh& mesh, const std::vector<std::pair<int, Cell
 // Writes the sections; returns each cell's element number.
 std::vector<cgsize_t> write_sections(const std::string& path, int fn, int Z, const Mesh& mesh) {
   std::vector<cgsize_t> number(static_cast<std::size_t>(mesh.num_cells()), 0);
-  // (region, type) in order of first appearance.
+  // (region, type) in order of first appearance, the elements' first: element numbers
+  // 1..size[1] are the zone's cells, as VTK's reader (its BC patches) and solvers expect.
   std::vector<std::pair<int, CellType> > keys;
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    const std::pair<int, CellType> k(mesh.cell_region[c], mesh.cell_types[c]);
-    if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
-  }
+  const int top = mesh.dim();
+  for (int pass = 0; pass < 2; ++pass)
+    for (int c = 0; c < mesh.num_cells(); ++c) {
+      const std::pair<int, CellType> k(mesh.cell_region[c], mesh.cell_types[c]);
+      if ((cell_dim(k.second) == top) == (pass == 0) &&
+          std::find(keys.begin(), keys.end(), k) == keys.end())
+        keys.push_back(k);
+    }
   cgsize_t next = 1;
   std::vector<std::string> used;
   for (const auto& k : keys) {
