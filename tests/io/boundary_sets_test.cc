@@ -159,12 +159,13 @@ int exodus_side_set_count(const std::string& path) {
 // tmop -> tmop keeps the cells (no duplicates from the side sets), regions and names; the file
 // holds one side set per side region and none for "loose".
 TEST(ExodusSides, RoundTripWritesSideSetsAndReadsNoDuplicates) {
+  const std::string dir = test::temp_dir();
   for (int nd : {3, 2}) {
     const Mesh a =
         with_sides(nd == 3 ? std::vector<CellType>(std::begin(kVolumeTypes), std::end(kVolumeTypes))
                            : std::vector<CellType>(std::begin(kAreaTypes), std::end(kAreaTypes)),
                    nd);
-    const std::string path = test::temp_dir() + "/s" + std::to_string(nd) + ".exo";
+    const std::string path = dir + "/s" + std::to_string(nd) + ".exo";
     ASSERT_TRUE(write_mesh(path, a).ok());
     EXPECT_EQ(exodus_side_set_count(path), nd == 3 ? 6 : 4) << nd;
     Mesh b;
@@ -270,8 +271,9 @@ std::string write_cubit(const std::string& path, bool two_d, int bad_elem = 0, i
 // Each side becomes a boundary cell of its set's region and name, with the manual's outward
 // normal; HEX20's sides are quad8 with their mid-edge nodes at the edge midpoints.
 TEST(ExodusSides, CubitStyleFileGivesNamedOutwardBoundaryCells) {
+  const std::string dir = test::temp_dir();
   for (bool two_d : {false, true}) {
-    const std::string path = test::temp_dir() + (two_d ? "/cubit2.exo" : "/cubit3.exo");
+    const std::string path = dir + (two_d ? "/cubit2.exo" : "/cubit3.exo");
     ASSERT_EQ(write_cubit(path, two_d), "");
     Mesh m;
     const Status st = read_mesh(path, &m);
@@ -310,7 +312,7 @@ TEST(ExodusSides, CubitStyleFileGivesNamedOutwardBoundaryCells) {
       for (std::size_t s = 1; s <= manual_normals(elems[b - 1].type).size(); ++s)
         EXPECT_EQ(seen[10 * b + s], 1) << b << " " << s;
     // Written back by tmop and read again: the same mesh (now the sides come from blocks too).
-    const std::string again = test::temp_dir() + (two_d ? "/again2.exo" : "/again3.exo");
+    const std::string again = dir + (two_d ? "/again2.exo" : "/again3.exo");
     ASSERT_TRUE(write_mesh(again, m).ok());
     Mesh back;
     ASSERT_TRUE(read_mesh(again, &back).ok());
@@ -373,12 +375,13 @@ std::vector<CgBc> cgns_bcs(const std::string& path) {
 // sections of several types (so no section carries the name) and the file holds one
 // FamilySpecified BC per boundary region, PointRange for the contiguous one.
 TEST(CgnsBcs, RoundTripWritesOneBcPerBoundaryRegionAndNamesRegions) {
+  const std::string dir = test::temp_dir();
   for (int nd : {3, 2}) {
     const Mesh a =
         with_sides(nd == 3 ? std::vector<CellType>(std::begin(kVolumeTypes), std::end(kVolumeTypes))
                            : std::vector<CellType>(std::begin(kAreaTypes), std::end(kAreaTypes)),
                    nd);
-    const std::string path = test::temp_dir() + "/s" + std::to_string(nd) + ".cgns";
+    const std::string path = dir + "/s" + std::to_string(nd) + ".cgns";
     ASSERT_TRUE(write_mesh(path, a).ok());
     const std::vector<CgBc> bcs = cgns_bcs(path);
     const int sides = nd == 3 ? 6 : 4;
@@ -502,19 +505,19 @@ TEST(CgnsBcs, BadBcIsAOneLineErrorNamingFileAndBc) {
 // blocks of that name (vtk_boundary_sets_check.py). pyramid14 has no VTK type.
 TEST(BoundarySets, VtkReadsSideSetsAndBcPatchesWithTheirNames) {
   if (!test::have_python_module("vtk")) GTEST_SKIP() << "python3-vtk9 not installed";
+  const std::string dir = test::temp_dir();
   for (int nd : {3, 2}) {
     std::vector<CellType> types(std::begin(kAreaTypes), std::end(kAreaTypes));
     if (nd == 3) types.assign(std::begin(kVolumeTypes), std::end(kVolumeTypes) - 1);
     const Mesh m = with_sides(types, nd);
-    const std::string dir = test::temp_dir();
-    ASSERT_TRUE(write_mesh(dir + "/v.exo", m).ok());
-    ASSERT_TRUE(write_mesh(dir + "/v.cgns", m).ok());
+    const std::string v = dir + "/v" + std::to_string(nd);
+    ASSERT_TRUE(write_mesh(v + ".exo", m).ok());
+    ASSERT_TRUE(write_mesh(v + ".cgns", m).ok());
     std::string out;
-    ASSERT_EQ(
-        test::run(std::string("/usr/bin/python3 ") + TMOP_SOURCE_DIR +
-                      "/tests/io/vtk_boundary_sets_check.py " + dir + "/v.exo " + dir + "/v.cgns",
-                  &out),
-        0)
+    ASSERT_EQ(test::run(std::string("/usr/bin/python3 ") + TMOP_SOURCE_DIR +
+                            "/tests/io/vtk_boundary_sets_check.py " + v + ".exo " + v + ".cgns",
+                        &out),
+              0)
         << out;
     const std::vector<int> counts =
         nd == 3 ? std::vector<int>{10, 10, 10, 10, 8, 3} : std::vector<int>{5, 5, 5, 3};
