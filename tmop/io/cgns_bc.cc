@@ -132,7 +132,8 @@ void read_cgns_bcs(const std::string& path, int fn, int Z, int cell_dim_, std::u
     if (np > 0 && cg_boco_read(fn, 1, Z, BC, pts.data(), nullptr) != CG_OK)
       bc_fail(where + ": cannot read its points");
     if (range) {
-      if (pts[1] < pts[0] || pts[1] - pts[0] >= total)
+      if (pts[1] < pts[0] ||
+          static_cast<double>(pts[1]) - static_cast<double>(pts[0]) >= static_cast<double>(total))
         throw Error(where + ": bad element range " + std::to_string(pts[0]) + ".." +
                     std::to_string(pts[1]));
       const cgsize_t lo = pts[0], hi = pts[1];

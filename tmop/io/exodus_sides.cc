@@ -85,7 +85,8 @@ int face_node(const CellInfo& info, const int* g, int n) {
   return -1;
 }
 
-// Sorted node set of up to 9 nodes, padded with -1: equal keys are equal node sets.
+// Sorted node set of up to 9 nodes (n <= 9: callers check), padded with -1: equal keys are equal
+// node sets.
 using Key = std::array<std::int32_t, 9>;
 Key key_of(const std::int32_t* nodes, int n) {
   Key k;
@@ -239,8 +240,9 @@ void read_exodus_side_sets(const std::string& path, int exo, std::uint64_t file_
   const std::vector<std::string> names = exodus_names(exo, EX_SIDE_SET, nss);
   std::unordered_map<Key, int, KeyHash> have;  // node set -> cell
   have.reserve(static_cast<std::size_t>(mesh->num_cells()));
-  for (int c = 0; c < mesh->num_cells(); ++c)
-    have.emplace(key_of(mesh->cell(c), mesh->cell_size(c)), c);
+  for (int c = 0; c < mesh->num_cells(); ++c)  // a side has at most 9 nodes
+    if (mesh->cell_size(c) <= static_cast<int>(Key().size()))
+      have.emplace(key_of(mesh->cell(c), mesh->cell_size(c)), c);
   std::int32_t nodes[kMaxCellNodes];
   for (int k = 0; k < nss; ++k) {
     const int id = ids[k];
