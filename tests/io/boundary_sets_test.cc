@@ -176,6 +176,24 @@ TEST(ExodusSides, RoundTripWritesSideSetsAndReadsNoDuplicates) {
   }
 }
 
+// A quad4 on a hex27's face is not that element's side (a quad9): its region gets no side set
+// (the block keeps it), and the file reads back the same.
+TEST(ExodusSides, LinearFacesOfQuadraticElementsAreNoSideSet) {
+  Mesh a = test::straight_cells_mesh({CellType::kHex27, CellType::kHex8});
+  for (int c = 0; c < 2; ++c) {
+    CellType st;
+    std::int32_t nodes[kMaxCellNodes];
+    ASSERT_TRUE(io::exodus_side_cell(a, c, 5, 3, &st, nodes));
+    a.add_cell(CellType::kQuad4, nodes, 7 + c, 0);  // region 7 on the hex27, 8 on the hex8
+  }
+  const std::string path = test::temp_dir() + "/q.exo";
+  ASSERT_TRUE(write_mesh(path, a).ok());
+  EXPECT_EQ(exodus_side_set_count(path), 1);  // region 8 only
+  Mesh b;
+  ASSERT_TRUE(read_mesh(path, &b).ok());
+  EXPECT_EQ(tmop_fuzz::mesh_difference(a, b, tmop_fuzz::holds("exo", false)), "");
+}
+
 // A Cubit-style file: element blocks of volume (or 2D) cells only and side sets naming their
 // sides, written with libexodusii. 3D: a unit-cube HEX8, a TETRA, a WEDGE, a PYRAMID and a HEX20
 // (Exodus node order) at x = 0, 2, 4, 6, 8; 2D: a QUAD4 and a TRI3. Side set 10 b + s holds side
