@@ -240,8 +240,9 @@ void read_exodus_side_sets(const std::string& path, int exo, std::uint64_t file_
   const std::vector<std::string> names = exodus_names(exo, EX_SIDE_SET, nss);
   std::unordered_map<Key, int, KeyHash> have;  // node set -> cell
   have.reserve(static_cast<std::size_t>(mesh->num_cells()));
-  for (int c = 0; c < mesh->num_cells(); ++c)  // a side has at most 9 nodes
-    if (mesh->cell_size(c) <= static_cast<int>(Key().size()))
+  for (int c = 0; c < mesh->num_cells(); ++c)  // sides: dimension < num_dim, at most 9 nodes
+    if (cell_dim(mesh->cell_types[c]) < num_dim &&
+        mesh->cell_size(c) <= static_cast<int>(Key().size()))
       have.emplace(key_of(mesh->cell(c), mesh->cell_size(c)), c);
   std::int32_t nodes[kMaxCellNodes];
   for (int k = 0; k < nss; ++k) {
