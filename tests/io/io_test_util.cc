@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -295,8 +296,27 @@ std::string diff_dumps(const Dump& a, const Dump& b, double rel_tol) {
   return "";
 }
 
+// mesh with its cells reordered as a CGNS file holds them: the elements (dimension dim()) first,
+// each group in its order.
+Mesh elements_first(const Mesh& mesh) {
+  Mesh out = mesh;
+  out.cell_types.clear();
+  out.cell_offsets.assign(1, 0);
+  out.cell_nodes.clear();
+  out.cell_region.clear();
+  out.cell_entity.clear();
+  const int top = mesh.dim();
+  for (int pass = 0; pass < 2; ++pass)
+    for (int c = 0; c < mesh.num_cells(); ++c)
+      if ((cell_dim(mesh.cell_types[c]) == top) == (pass == 0))
+        out.add_cell(mesh.cell_types[c], mesh.cell(c), mesh.cell_region[c],
+                     mesh.cell_entity.empty() ? 0 : mesh.cell_entity[c]);
+  return out;
+}
+
 std::string round_trip(const Mesh& mesh, const std::vector<std::string>& names) {
   const std::string dir = temp_dir();
+  const Mesh cgns_order = elements_first(mesh);
   for (const std::string& name : names) {
     const std::string path = dir + "/" + name;
     const Status w = write_mesh(path, mesh);
@@ -304,7 +324,10 @@ std::string round_trip(const Mesh& mesh, const std::vector<std::string>& names) 
     Mesh back;
     const Status r = read_mesh(path, &back);
     if (!r.ok()) return name + ": " + r.message();
-    const std::string d = diff_meshes(mesh, back, false);
+    std::string ext = name.substr(name.rfind('.') + 1);
+    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    const bool cgns = ext == "cgns";
+    const std::string d = diff_meshes(cgns ? cgns_order : mesh, back, false);
     if (!d.empty()) return name + ": " + d;
   }
   return "";

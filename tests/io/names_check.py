@@ -12,6 +12,11 @@
                                   a file meshio parses (meshio keeps no marker names), .cgns
                                   the element section names (other than tmop's Region_R_TYPE)
                                   of the first zone through h5py
+  names_check.py sides FILE...    print "FILE<TAB>name|name|..." (sorted) of the boundary sets
+                                  solvers read: .exo netCDF4's ss_names (side sets), .cgns the
+                                  BC_t names under ZoneBC_t of the first zone through h5py; with
+                                  python3-vtk9, vtkExodusIIReader's side set names and
+                                  vtkCGNSReader's BC patch names must be the same
   names_check.py periodic FILE    print the number of periodic node pairs the Gmsh API reads
 """
 import sys
@@ -94,6 +99,66 @@ def cgns_names(path):
         return [k for k in children(zone, b"Elements_t") if not k.startswith("Region_")]
 
 
+def exo_side_names(path):
+    import netCDF4
+    with netCDF4.Dataset(path) as nc:
+        names = []
+        if "ss_names" in nc.variables:
+            v = nc.variables["ss_names"]
+            v.set_auto_mask(False)
+            names = [b"".join(row).decode().rstrip("\0") for row in v[:]]
+    try:
+        import vtk
+    except ImportError:
+        return names
+    r = vtk.vtkExodusIIReader()
+    r.SetFileName(path)
+    r.UpdateInformation()
+    E = vtk.vtkExodusIIReader
+    vnames = [r.GetObjectName(E.SIDE_SET, i) for i in range(r.GetNumberOfObjects(E.SIDE_SET))]
+    if sorted(vnames) != sorted(names):
+        raise SystemExit("VTK reads side sets %s, netCDF4 %s" % (vnames, names))
+    return names
+
+
+def cgns_bc_names(path):
+    import h5py
+
+    def children(node, label):
+        return [k for k in node.keys() if node[k].attrs.get("label", b"") == label]
+    with h5py.File(path, "r") as f:
+        base = f[children(f, b"CGNSBase_t")[0]]
+        zone = base[children(base, b"Zone_t")[0]]
+        names = []
+        for zbc in children(zone, b"ZoneBC_t"):
+            names += children(zone[zbc], b"BC_t")
+    try:
+        import vtk
+    except ImportError:
+        return names
+    r = vtk.vtkCGNSReader()
+    r.SetFileName(path)
+    r.UpdateInformation()
+    r.EnableAllBases()
+    r.LoadBndPatchOn()
+    r.Update()
+    vnames = []
+    out = r.GetOutput()
+    for b in range(out.GetNumberOfBlocks()):
+        base = out.GetBlock(b)
+        for z in range(base.GetNumberOfBlocks()):
+            zone = base.GetBlock(z)
+            for p in range(zone.GetNumberOfBlocks()):
+                if zone.GetMetaData(p).Get(vtk.vtkCompositeDataSet.NAME()) != "Patches":
+                    continue
+                patches = zone.GetBlock(p)
+                vnames += [patches.GetMetaData(i).Get(vtk.vtkCompositeDataSet.NAME())
+                           for i in range(patches.GetNumberOfBlocks())]
+    if sorted(vnames) != sorted(names):
+        raise SystemExit("VTK reads BC patches %s, h5py %s" % (vnames, names))
+    return names
+
+
 def make_gmsh(outdir):
     import gmsh
     gmsh.initialize()
@@ -142,6 +207,11 @@ def main():
     elif sys.argv[1] == "names":
         readers = {"msh": gmsh_names, "vtu": vtu_names, "vtk": vtu_names, "exo": exo_names, "su2": su2_names,
                    "cgns": cgns_names}
+        for path in sys.argv[2:]:
+            names = readers[path.rsplit(".", 1)[-1]](path)
+            print(path + "\t" + "|".join(sorted(names)))
+    elif sys.argv[1] == "sides":
+        readers = {"exo": exo_side_names, "cgns": cgns_bc_names}
         for path in sys.argv[2:]:
             names = readers[path.rsplit(".", 1)[-1]](path)
             print(path + "\t" + "|".join(sorted(names)))

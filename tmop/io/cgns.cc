@@ -9,12 +9,13 @@
 // are split per element. Regions: a section named "Region_R_..." (tmop's own) gives region R,
 // any other section the number in its Descriptor "tmop_region" (tmop's named sections) or else
 // its 1-based section number; such a section's name is the physical name of (dimension of its
-// cells, region) (Mesh::physical_names). Boundary conditions and flow solutions are not read.
+// cells, region) (Mesh::physical_names). Boundary conditions (ZoneBC_t) name boundary regions
+// on read and are written for every boundary region (cgns_bc.h). Flow solutions are not read.
 // Write: one base "Base", one zone "Zone1", one section per (region, type), named
-// "Region_R_TYPE", element numbers 1..N in section order; coordinates as RealDouble. A region
-// with a physical name whose cells are of one type is one section named by it instead (CGNS node
-// names: 1 to 32 characters, no '/'; the first of equal names only), with the region in a
-// Descriptor "tmop_region"; other names are not written.
+// "Region_R_TYPE", the elements' sections first, element numbers 1..N in section order; coordinates
+// as RealDouble. A region with a physical name whose cells are of one type is one section named by
+// it instead (CGNS node names: 1 to 32 characters, no '/'; the first of equal names only), with the
+// region in a Descriptor "tmop_region"; other names are not written.
 //
 // Types and node order (CGNS SIDS, "Unstructured Grid Element Numbering Conventions"): NODE,
 // BAR_2/3, TRI_3/6, QUAD_4/8/9, TETRA_4/10, PYRA_5/13/14, PENTA_6/15/18, HEXA_8/20/27, with the
@@ -27,6 +28,7 @@
 #include <vector>
 
 #include "tmop/io/atomic_file.h"
+#include "tmop/io/cgns_bc.h"
 #include "tmop/io/formats.h"
 #include "tmop/io/node_order.h"
 
@@ -124,8 +126,8 @@ int named_section_region(int fn, int Z, int S) {
 }
 
 // Adds the cells of section S of zone Z (vertices offset by base, nv of them).
-void read_section(const std::string& path, int fn, int Z, int S, cgsize_t base, cgsize_t nv,
-                  std::uint64_t file_size, Mesh* mesh) {
+CgSectionCells read_section(const std::string& path, int fn, int Z, int S, cgsize_t base,
+                            cgsize_t nv, std::uint64_t file_size, Mesh* mesh) {
   char name[64] = {0};
   CGNS_ENUMT(ElementType_t) type;
   cgsize_t start = 0, end = 0;
@@ -139,6 +141,9 @@ void read_section(const std::string& path, int fn, int Z, int S, cgsize_t base, 
   std::vector<cgsize_t> data(static_cast<std::size_t>(size));
   if (size > 0 && cg_elements_read(fn, 1, Z, S, data.data(), nullptr) != CG_OK)
     cg_fail(path, "cannot read element section " + std::to_string(S));
+  CgSectionCells cells;
+  cells.start = start;
+  cells.first = mesh->num_cells();
   int region = 0;
   const bool named = !tmop_section_name(name, &region);
   if (named) region = named_section_region(fn, Z, S);
@@ -164,9 +169,12 @@ void read_section(const std::string& path, int fn, int Z, int S, cgsize_t base, 
   }
   if (named && !data.empty())
     mesh->set_physical_name(cell_dim(mesh->cell_types.back()), region, name);
+  cells.count = mesh->num_cells() - cells.first;
+  return cells;
 }
 
-void read_zone(const std::string& path, int fn, int Z, std::uint64_t file_size, Mesh* mesh) {
+void read_zone(const std::string& path, int fn, int Z, int cell_dim, std::uint64_t file_size,
+               Mesh* mesh) {
   CGNS_ENUMT(ZoneType_t) zt;
   if (cg_zone_type(fn, 1, Z, &zt) != CG_OK) cg_fail(path, "cannot read zone " + std::to_string(Z));
   if (zt != CGNS_ENUMV(Unstructured))
@@ -196,7 +204,10 @@ void read_zone(const std::string& path, int fn, int Z, std::uint64_t file_size, 
     for (int k = 0; k < 3; ++k) mesh->coords.push_back(xyz[k][static_cast<std::size_t>(v)]);
   int ns = 0;
   if (cg_nsections(fn, 1, Z, &ns) != CG_OK) cg_fail(path, "cannot count the element sections");
-  for (int S = 1; S <= ns; ++S) read_section(path, fn, Z, S, base, nv, file_size, mesh);
+  std::vector<CgSectionCells> sections;
+  for (int S = 1; S <= ns; ++S)
+    sections.push_back(read_section(path, fn, Z, S, base, nv, file_size, mesh));
+  read_cgns_bcs(path, fn, Z, cell_dim, file_size, sections, mesh);
 }
 
 }  // namespace
@@ -213,9 +224,13 @@ void read_cgns(const std::string& path, Mesh* mesh) {
   if (cg_nbases(f.fn, &nb) != CG_OK || nb < 1) throw Error(path + ": no CGNS base in the file");
   int nz = 0;
   if (cg_nzones(f.fn, 1, &nz) != CG_OK || nz < 1) throw Error(path + ": no zone in the first base");
+  char base[64] = {0};
+  int cell_dim = 0, phys_dim = 0;
+  if (cg_base_read(f.fn, 1, base, &cell_dim, &phys_dim) != CG_OK)
+    cg_fail(path, "cannot read the first base");
   mesh->space_dim = 3;
   for (int Z = 1; Z <= nz; ++Z)
-    read_zone(path, f.fn, Z, static_cast<std::uint64_t>(st.st_size), mesh);
+    read_zone(path, f.fn, Z, cell_dim, static_cast<std::uint64_t>(st.st_size), mesh);
 }
 
 void check_cgns_writable(const Mesh& mesh) {
@@ -245,13 +260,20 @@ std::string section_name(const Mesh& mesh, const std::vector<std::pair<int, Cell
   return *name;
 }
 
-void write_sections(const std::string& path, int fn, int Z, const Mesh& mesh) {
-  // (region, type) in order of first appearance.
+// Writes the sections; returns each cell's element number.
+std::vector<cgsize_t> write_sections(const std::string& path, int fn, int Z, const Mesh& mesh) {
+  std::vector<cgsize_t> number(static_cast<std::size_t>(mesh.num_cells()), 0);
+  // (region, type) in order of first appearance, the elements' first: element numbers
+  // 1..size[1] are the zone's cells, as VTK's reader (its BC patches) and solvers expect.
   std::vector<std::pair<int, CellType> > keys;
-  for (int c = 0; c < mesh.num_cells(); ++c) {
-    const std::pair<int, CellType> k(mesh.cell_region[c], mesh.cell_types[c]);
-    if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
-  }
+  const int top = mesh.dim();
+  for (int pass = 0; pass < 2; ++pass)
+    for (int c = 0; c < mesh.num_cells(); ++c) {
+      const std::pair<int, CellType> k(mesh.cell_region[c], mesh.cell_types[c]);
+      if ((cell_dim(k.second) == top) == (pass == 0) &&
+          std::find(keys.begin(), keys.end(), k) == keys.end())
+        keys.push_back(k);
+    }
   cgsize_t next = 1;
   std::vector<std::string> used;
   for (const auto& k : keys) {
@@ -259,6 +281,7 @@ void write_sections(const std::string& path, int fn, int Z, const Mesh& mesh) {
     std::vector<cgsize_t> conn;
     for (int c = 0; c < mesh.num_cells(); ++c) {
       if (mesh.cell_region[c] != k.first || mesh.cell_types[c] != k.second) continue;
+      number[c] = next + static_cast<cgsize_t>(conn.size() / nn);
       const std::size_t at = conn.size();
       conn.resize(at + nn);
       for (int i = 0; i < nn; ++i) conn[at + cg_index(k.second, i)] = mesh.cell(c)[i] + 1;
@@ -277,6 +300,7 @@ void write_sections(const std::string& path, int fn, int Z, const Mesh& mesh) {
         cg_descriptor_write("tmop_region", std::to_string(k.first).c_str()) != CG_OK)
       cg_fail(path, "cannot write the region of section " + name);
   }
+  return number;
 }
 
 }  // namespace
@@ -306,7 +330,7 @@ void write_cgns(const std::string& path, const Mesh& mesh) {
       if (cg_coord_write(f.fn, B, Z, CGNS_ENUMV(RealDouble), names[k], x.data(), &C) != CG_OK)
         cg_fail(path, std::string("cannot write ") + names[k]);
     }
-    write_sections(path, f.fn, Z, mesh);
+    write_cgns_bcs(path, f.fn, B, Z, mesh, write_sections(path, f.fn, Z, mesh));
     const int fn = f.fn;
     f.fn = -1;
     if (cg_close(fn) != CG_OK) cg_fail(path, "cannot finish the CGNS file");

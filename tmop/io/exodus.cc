@@ -7,8 +7,10 @@
 // that id is still free (otherwise the next free id), so Mesh::cell_region = block id on read.
 // Block names <-> Mesh::physical_names: a block is named by the physical name of its (dimension,
 // region); on read a named block names (dimension of its type, block id). Names are stored up
-// to 255 characters (ex_set_max_name_length). Node sets, side sets and variables are not read
-// or written.
+// to 255 characters (ex_set_max_name_length). Side sets <-> boundary regions (exodus_sides.h:
+// written in addition to the blocks for regions whose cells are all sides of elements; read as
+// boundary cells unless a block holds the same cell). Node sets and variables are not read or
+// written.
 //
 // Types and node order (Exodus II manual, "element types"; Sandia's IOSS face tables for HEX27
 // and WEDGE18): BAR2/BEAM2/TRUSS2 line2, BEAM3 (read also BAR3, TRUSS3: meshio 5 knows only
@@ -25,6 +27,7 @@
 #include <vector>
 
 #include "tmop/io/atomic_file.h"
+#include "tmop/io/exodus_sides.h"
 #include "tmop/io/formats.h"
 #include "tmop/io/netcdf_header.h"
 #include "tmop/io/node_order.h"
@@ -126,20 +129,6 @@ struct ExoFile {
 
 constexpr int kMaxName = 255;
 
-// The names of the nb element blocks in id order ("" when unnamed or unreadable).
-std::vector<std::string> block_names(int exo, int nb) {
-  std::vector<std::string> out(nb);
-  const int len = static_cast<int>(ex_inquire_int(exo, EX_INQ_DB_MAX_USED_NAME_LENGTH));
-  if (nb == 0 || len <= 0 || len > kMaxName) return out;
-  ex_set_max_name_length(exo, len);
-  std::vector<std::vector<char> > buf(nb, std::vector<char>(len + 1, '\0'));
-  std::vector<char*> ptr(nb);
-  for (int b = 0; b < nb; ++b) ptr[b] = buf[b].data();
-  if (ex_get_names(exo, EX_ELEM_BLOCK, ptr.data()) < 0) return out;
-  for (int b = 0; b < nb; ++b) out[b] = std::string(buf[b].data());
-  return out;
-}
-
 }  // namespace
 
 void read_exodus(const std::string& path, Mesh* mesh) {
@@ -176,10 +165,11 @@ void read_exodus(const std::string& path, Mesh* mesh) {
     mesh->coords[3 * v + 1] = dim > 1 ? y[v] : 0.0;
     mesh->coords[3 * v + 2] = dim > 2 ? z[v] : 0.0;
   }
+  const int first = mesh->num_cells();
   std::vector<int> ids(nb);
   if (nb > 0 && ex_get_ids(f.id, EX_ELEM_BLOCK, ids.data()) < 0)
     throw Error(path + ": cannot read the Exodus II element block ids");
-  const std::vector<std::string> names = block_names(f.id, nb);
+  const std::vector<std::string> names = exodus_names(f.id, EX_ELEM_BLOCK, nb);
   for (std::size_t b = 0; b < ids.size(); ++b) {
     const int id = ids[b];
     char type[MAX_STR_LENGTH + 1] = {0};
@@ -211,6 +201,7 @@ void read_exodus(const std::string& path, Mesh* mesh) {
     }
     if (!names[b].empty()) mesh->set_physical_name(cell_dim(t), id, names[b]);
   }
+  read_exodus_side_sets(path, f.id, size, nss, dim, first, mesh->num_cells() - first, mesh);
 }
 
 void check_exodus_writable(const Mesh& mesh) {
@@ -251,8 +242,17 @@ std::vector<OutBlock> make_blocks(const Mesh& mesh) {
   return blocks;
 }
 
-void write_blocks(const std::string& path, int exo, const Mesh& mesh) {
-  const std::vector<OutBlock> blocks = make_blocks(mesh);
+// Cell c's 1-based Exodus element number: blocks in order, cells in block order.
+std::vector<int> element_numbers(const Mesh& mesh, const std::vector<OutBlock>& blocks) {
+  std::vector<int> number(mesh.num_cells(), 0);
+  int next = 1;
+  for (const OutBlock& b : blocks)
+    for (int c : b.cells) number[c] = next++;
+  return number;
+}
+
+void write_blocks(const std::string& path, int exo, const Mesh& mesh,
+                  const std::vector<OutBlock>& blocks) {
   for (const OutBlock& b : blocks) {
     const int npe = cell_num_nodes(b.type);
     if (ex_put_block(exo, EX_ELEM_BLOCK, b.id, exo_name(b.type),
@@ -293,8 +293,11 @@ void write_exodus(const std::string& path, const Mesh& mesh) {
     if (f.id < 0) throw Error(path + ": cannot create the Exodus II file");
     ex_set_max_name_length(f.id, kMaxName);  // before ex_put_init: names up to 255 characters
     const int dim = mesh.space_dim == 2 && mesh.plane_z != 0 ? 3 : mesh.space_dim;
-    const int nb = static_cast<int>(make_blocks(mesh).size());
-    if (ex_put_init(f.id, "tmop", dim, mesh.num_vertices(), mesh.num_cells(), nb, 0, 0) < 0)
+    const std::vector<OutBlock> blocks = make_blocks(mesh);
+    const std::vector<ExoSideSet> sides =
+        plan_exodus_side_sets(mesh, element_numbers(mesh, blocks), dim);
+    const int nb = static_cast<int>(blocks.size()), nss = static_cast<int>(sides.size());
+    if (ex_put_init(f.id, "tmop", dim, mesh.num_vertices(), mesh.num_cells(), nb, 0, nss) < 0)
       throw Error(path + ": cannot write the Exodus II header");
     const int n = mesh.num_vertices();
     std::vector<double> x(n), y(n), z(n);
@@ -305,7 +308,8 @@ void write_exodus(const std::string& path, const Mesh& mesh) {
     }
     if (n > 0 && ex_put_coord(f.id, x.data(), y.data(), dim > 2 ? z.data() : nullptr) < 0)
       throw Error(path + ": cannot write the Exodus II coordinates");
-    write_blocks(path, f.id, mesh);
+    write_blocks(path, f.id, mesh, blocks);
+    write_exodus_side_sets(path, f.id, sides);
     const int id = f.id;
     f.id = -1;
     if (ex_close(id) < 0) throw Error(path + ": cannot finish the Exodus II file");
