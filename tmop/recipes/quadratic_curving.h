@@ -12,16 +12,18 @@
 //
 // The measure, at every sample point: shape_barrier + size_barrier_quadratic toward the
 // straight-sided cell (every non-corner node at its corners' interpolation) scaled to the curved
-// cell's area (volume) at the start, under the power objective. It is zero exactly when the
-// curved cell is a rotation of that cell: det J constant over the cell (the det J ratio min /
+// cell's area (volume) at the start (TargetSpec::cell_scale), under the power objective (when no
+// result keeps every guarantee, the plain mean: probe_starts in the .cc). It is zero exactly when
+// the curved cell is a rotation of that cell: det J constant over the cell (the det J ratio min /
 // max is 1) and the pointwise mean ratio the corner cell's; both barriers are infinite as
 // det J -> 0. (Toward the unscaled straight-sided cell, a cell whose curved boundary edge takes
 // a third of its area is pushed to grow into its neighbours.) Two starts are solved and the
-// better kept (every cell valid, then the worst and the sum of the det J ratio of the cells
-// touched): the nodes where they are, and the elastic start (the moving nodes on their chords,
-// then |T - I|^2 toward the straight-sided cell, a linear least-squares problem: the boundary's
-// curvature spread elastically). Measured on the untangled gear tri6 of
-// high_order_untangle_test (det J ratio worst / mean): the size+shape barrier |T - T^-t|^2
+// better kept (every guarantee kept, every cell valid, then the worst and the sum of the det J
+// ratio of the cells touched): the nodes where they are, and the elastic start (the moving nodes on
+// their chords, then |T - I|^2 toward the straight-sided cell, a linear least-squares problem: the
+// boundary's curvature spread elastically). Measured on the untangled gear tri6 of
+// high_order_untangle_test (the first solve from the elastic start; det J ratio worst / mean):
+// the size+shape barrier |T - T^-t|^2
 // unscaled 0.297 / 0.848, scaled 0.365 / 0.855; shape + size barrier (tau - 1)^2 / tau 0.333;
 // shape + size_barrier_quadratic 0.540 / 0.883 (0.3 x shape: 0.709, but pointwise mean ratio
 // worst 0.276 where Gmsh's elastic has 0.354); the elastic start alone 0.419 (pointwise 0.151).
@@ -50,9 +52,10 @@ namespace tmop {
 // gear: 0.540 with any, the untangler's curved nodes move anyway).
 constexpr int kCurvingRings = 1;
 // The largest loss of a cell's det J ratio or pointwise mean ratio that putting one of its
-// mid-edge nodes back on its chord may cost. 1e-3 / 1e-2 / 3e-2: the gear keeps 176 / 144 / 121
-// of its 182 interior edges curved (det J ratio mean 0.884 / 0.883 / 0.882), t5 order 2 4,575 /
-// 4,085 / 3,772.
+// mid-edge nodes back on its chord may cost. With 1e-2 the gear (tmop_optimize's default
+// recipe) keeps 119 of its 182 interior edges curved, t5 at order 2 3,778 of 13,703 (an earlier
+// form of the stage: 1e-3 / 1e-2 / 3e-2 kept 176 / 144 / 121 on the gear, det J ratio mean
+// 0.884 / 0.883 / 0.882).
 constexpr double kSnapLoss = 1e-2;
 
 // The stage above on `mesh` (corners placed; boundary: the vertices that never move, the
