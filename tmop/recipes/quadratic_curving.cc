@@ -225,13 +225,14 @@ int snap_to_chords(Mesh* mesh, const Mesh& straight, const std::vector<char>& mo
       for (int a = 0; a < sd; ++a) mesh->vertex(v)[a] = keep[a];
     }
   }
-  // Undo the snaps of the cells that then break a guarantee, until none does.
-  for (int pass = 0; count > 0 && pass < kMaxStepBackPasses; ++pass) {
+  // Undo the snaps of the cells that then break a guarantee, until none does; all of them when
+  // that does not end it (a fallen mean can be flagged on cells that were not snapped).
+  for (int pass = 0; count > 0; ++pass) {
     std::vector<char> violates;
     std::string first;
     if (quadratic_violators(*mesh, input, options, &violates, &first) == 0) break;
     int undone = 0;
-    for (int c = 0; c < mesh->num_cells(); ++c) {
+    for (int c = 0; c < mesh->num_cells() && pass < kMaxStepBackPasses; ++c) {
       if (!violates[c]) continue;
       for (int i = 0; i < mesh->cell_size(c); ++i) {
         const int v = mesh->cell(c)[i];
@@ -242,7 +243,10 @@ int snap_to_chords(Mesh* mesh, const Mesh& straight, const std::vector<char>& mo
         copy_vertex(solved, v, sd, &mesh->coords);
       }
     }
-    if (undone == 0) break;
+    if (undone == 0) {
+      mesh->coords = solved;
+      count = 0;
+    }
   }
   return count;
 }
