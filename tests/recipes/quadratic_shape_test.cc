@@ -518,5 +518,41 @@ TEST(QuadraticShape, DiskTri6StaysCertifiedWithItsBoundaryOnTheCircle) {
   }
 }
 
+// A sphere (r 0.55) cut out of a box, tet10 with the sphere's mid nodes on it and every interior
+// edge straight (1,070 cells, valid): the curving stage spreads the sphere's curvature into the
+// tets next to it. Every guarantee holds (the power objective lowered the det J ratio's and the
+// pointwise mean ratio's means here, so the stage takes the plain mean); straight edges away from
+// the sphere stay straight; the det J ratio worst reaches more than Gmsh 4.8's HighOrderElastic
+// on this mesh (0.532, while it lowers the pointwise mean ratio's mean 0.784 -> 0.781). Main
+// before the curving stage: 0.414.
+TEST(QuadraticShape, SphereInABoxTet10CurvesNextToTheSphere) {
+  if (!have_gmsh()) GTEST_SKIP() << "gmsh not installed";
+  Mesh input;
+  ASSERT_TRUE(gmsh_order2("sphere_box",
+                          "SetFactory(\"OpenCASCADE\");\nBox(1) = {-1, -1, -1, 2, 2, 2};\n"
+                          "Sphere(2) = {0, 0, 0, 0.55};\n"
+                          "BooleanDifference{ Volume{1}; Delete; }{ Volume{2}; Delete; }\n"
+                          "Mesh.CharacteristicLengthMax = 0.6;\n",
+                          3, &input));
+  Mesh mesh = input;
+  run_auto(&mesh);
+  expect_never_worse(input, mesh, "sphere in a box tet10");
+  expect_edges_kept(input, mesh, "sphere in a box tet10");
+  double worst = 1;
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!mesh.is_element(c, 3)) continue;
+    double nodes[10 * 3];
+    for (int i = 0; i < 10; ++i)
+      for (int a = 0; a < 3; ++a) nodes[3 * i + a] = mesh.vertex(mesh.cell(c)[i])[a];
+    worst = std::min(worst, quadratic_cell_measures(mesh.cell_type(c), nodes).det_ratio);
+  }
+  std::printf("sphere in a box tet10: det J ratio worst %.3f\n", worst);
+  EXPECT_GT(worst, 0.6);
+  GuaranteeOptions g;
+  for (const GuaranteeViolation& v :
+       check_guarantees(guarantee_baseline(input, 1), guarantee_values(mesh, 1), g))
+    ADD_FAILURE() << v.message();
+}
+
 }  // namespace
 }  // namespace tmop
