@@ -13,6 +13,7 @@
 #include <fstream>
 #include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +26,7 @@
 #include "tmop/quality/guarantees.h"
 #include "tmop/quality/quality_report.h"
 #include "tmop/recipes/improve_shape.h"
+#include "tmop/recipes/quadratic_curving.h"
 #include "tmop/recipes/untangle.h"
 
 namespace tmop {
@@ -168,14 +170,52 @@ void expect_never_worse(const Mesh& in, const Mesh& out, const std::string& labe
   EXPECT_EQ(q.certified_cells, q.certifiable_cells) << label;
 }
 
-// Edges straight in the input (deviation < 1e-12) stay straight (< 1e-9); curved ones keep
-// their relative deviation. Returns the number of straight edges whose corners moved.
+// The edges (corner pairs) of the cells within kCurvingRings rings of a cell with a curved
+// boundary edge: the curved-node stage may curve them (quadratic_curving.h).
+std::set<std::pair<int, int>> near_curved_boundary(const Mesh& mesh) {
+  const int d = mesh.dim();
+  const std::vector<char> boundary = boundary_vertex_mask(mesh);
+  const auto dev = edge_deviation(mesh);
+  std::vector<char> in(mesh.num_cells(), 0);
+  std::vector<std::vector<int>> vertex_cells(mesh.num_vertices());
+  auto key = [&](int c, int e) {
+    const CellInfo& info = cell_info(mesh.cell_type(c));
+    const int a = mesh.cell(c)[info.edges[e][0]], b = mesh.cell(c)[info.edges[e][1]];
+    return std::make_pair(std::min(a, b), std::max(a, b));
+  };
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!mesh.is_element(c, d) || cell_info(mesh.cell_type(c)).order != 2) continue;
+    const CellInfo& info = cell_info(mesh.cell_type(c));
+    for (int i = 0; i < info.num_nodes; ++i) vertex_cells[mesh.cell(c)[i]].push_back(c);
+    for (int e = 0; e < info.num_edges; ++e)
+      in[c] |= boundary[mesh.cell(c)[info.num_corners + e]] && dev.at(key(c, e)) > 1e-12;
+  }
+  for (int r = 0; r < kCurvingRings; ++r) {
+    std::vector<char> next = in;
+    for (int c = 0; c < mesh.num_cells(); ++c)
+      if (in[c])
+        for (int i = 0; i < mesh.cell_size(c); ++i)
+          for (int e : vertex_cells[mesh.cell(c)[i]]) next[e] = 1;
+    in.swap(next);
+  }
+  std::set<std::pair<int, int>> out;
+  for (int c = 0; c < mesh.num_cells(); ++c)
+    if (in[c])
+      for (int e = 0; e < cell_info(mesh.cell_type(c)).num_edges; ++e) out.insert(key(c, e));
+  return out;
+}
+
+// Edges straight in the input (deviation < 1e-12) stay straight (< 1e-9) unless they are near a
+// curved boundary (near_curved_boundary); curved ones keep their relative deviation. Returns the
+// number of straight edges whose corners moved.
 int expect_edges_kept(const Mesh& in, const Mesh& out, const std::string& label) {
   const auto d0 = edge_deviation(in), d1 = edge_deviation(out);
+  const auto may_curve = near_curved_boundary(in);
   double worst_straight = 0, worst_curved = 0;
   int moved = 0;
   for (const auto& [e, dev] : d0) {
     const double now = d1.at(e);
+    if (dev < 1e-12 && may_curve.count(e)) continue;
     if (dev < 1e-12) {
       worst_straight = std::max(worst_straight, now);
       bool m = false;
@@ -476,6 +516,42 @@ TEST(QuadraticShape, DiskTri6StaysCertifiedWithItsBoundaryOnTheCircle) {
     std::printf("%s: %d boundary nodes moved, farthest %.2e off the circle\n", label.c_str(),
                 boundary_moved, off);
   }
+}
+
+// A sphere (r 0.55) cut out of a box, tet10 with the sphere's mid nodes on it and every interior
+// edge straight (1,070 cells, valid): the curving stage spreads the sphere's curvature into the
+// tets next to it. Every guarantee holds (the power objective lowered the det J ratio's and the
+// pointwise mean ratio's means here, so the stage takes the plain mean); straight edges away from
+// the sphere stay straight; the det J ratio worst reaches more than Gmsh 4.8's HighOrderElastic
+// on this mesh (0.532, while it lowers the pointwise mean ratio's mean 0.784 -> 0.781). Main
+// before the curving stage: 0.414.
+TEST(QuadraticShape, SphereInABoxTet10CurvesNextToTheSphere) {
+  if (!have_gmsh()) GTEST_SKIP() << "gmsh not installed";
+  Mesh input;
+  ASSERT_TRUE(gmsh_order2("sphere_box",
+                          "SetFactory(\"OpenCASCADE\");\nBox(1) = {-1, -1, -1, 2, 2, 2};\n"
+                          "Sphere(2) = {0, 0, 0, 0.55};\n"
+                          "BooleanDifference{ Volume{1}; Delete; }{ Volume{2}; Delete; }\n"
+                          "Mesh.CharacteristicLengthMax = 0.6;\n",
+                          3, &input));
+  Mesh mesh = input;
+  run_auto(&mesh);
+  expect_never_worse(input, mesh, "sphere in a box tet10");
+  expect_edges_kept(input, mesh, "sphere in a box tet10");
+  double worst = 1;
+  for (int c = 0; c < mesh.num_cells(); ++c) {
+    if (!mesh.is_element(c, 3)) continue;
+    double nodes[10 * 3];
+    for (int i = 0; i < 10; ++i)
+      for (int a = 0; a < 3; ++a) nodes[3 * i + a] = mesh.vertex(mesh.cell(c)[i])[a];
+    worst = std::min(worst, quadratic_cell_measures(mesh.cell_type(c), nodes).det_ratio);
+  }
+  std::printf("sphere in a box tet10: det J ratio worst %.3f\n", worst);
+  EXPECT_GT(worst, 0.6);
+  GuaranteeOptions g;
+  for (const GuaranteeViolation& v :
+       check_guarantees(guarantee_baseline(input, 1), guarantee_values(mesh, 1), g))
+    ADD_FAILURE() << v.message();
 }
 
 }  // namespace

@@ -52,6 +52,21 @@ TEST(ReferenceTarget, AffineTriangleAndTetGiveTheirMatrix) {
   EXPECT_LT(max_abs_diff(W3.data(), M3.data(), 9), kTol);
 }
 
+// TargetSpec::cell_scale multiplies each cell's reference Jacobian by its factor; a list of
+// the wrong length is refused.
+TEST(ReferenceTarget, CellScaleMultipliesEachCellsJacobian) {
+  const std::vector<double> M2 = {2, 1, 0, 3};
+  const Mesh tri = affine_cell(CellType::kTri3, M2);
+  TargetSpec spec = reference_spec();
+  spec.cell_scale = {0.5};
+  const std::vector<double> W = targets(tri, spec);
+  const double half[4] = {1, 0.5, 0, 1.5};
+  EXPECT_LT(max_abs_diff(W.data(), half, 4), kTol);
+  spec.cell_scale = {0.5, 2};
+  std::vector<double> out;
+  EXPECT_FALSE(build_targets(tri, SampleRule::kDefault, spec, &out).ok());
+}
+
 TEST(ReferenceTarget, BilinearQuadDiffersAtEachCorner) {
   // Trapezoid (0,0) (4,0) (3,2) (1,2): A at corner 0 is [[2, 0.5], [0, 1]], at corner 1
   // [[2, -0.5], [0, 1]] (half the edge vectors, reference [-1,1]^2).

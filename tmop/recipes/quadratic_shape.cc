@@ -16,6 +16,7 @@
 #include "tmop/mesh/topology.h"
 #include "tmop/quality/cell_quality.h"
 #include "tmop/quality/guarantees.h"
+#include "tmop/recipes/quadratic_curving.h"
 #include "tmop/recipes/quadratic_guard.h"
 #include "tmop/recipes/recipe_geometry.h"
 #include "tmop/target/target.h"
@@ -154,152 +155,6 @@ Mesh corner_mesh_without(const Mesh& mesh, const std::vector<char>& drop) {
                  c < static_cast<int>(mesh.cell_entity.size()) ? mesh.cell_entity[c] : 0);
   }
   return out;
-}
-
-// The stage over curved interior nodes: mid-edge, mid-face and centre nodes off the corners'
-// interpolation (curved by the input or by untangling; this recipe never curves a straight
-// edge) and not on the boundary (`boundary` or a sliding geometry) move, everything else is
-// fixed. Terms: the caller's shape metric and target at every sample point (the pointwise mean
-// ratio) and the size barrier toward the straight-sided cell's Jacobian (det J toward its
-// constant: the det J ratio), so curvature the cells do not need is relaxed. The same guard as
-// the corner stage; when its rounds run out (or end by holding every node) the first round's
-// result stepped back is kept, if it kept every guarantee, else the nodes stay as they were.
-void relax_curved_nodes(Mesh* mesh, const ShapeOptions& options, const RecipeGeometry* geometry,
-                        const std::vector<char>& boundary, const QuadraticBaseline& input,
-                        RecipeResult* result) {
-  const int d = mesh->dim();
-  std::vector<char> fixed(mesh->num_vertices(), 1);
-  Mesh straight = *mesh;
-  int free_nodes = 0;
-  double N[kMaxCellNodes];
-  for (int c = 0; c < mesh->num_cells(); ++c) {
-    if (!is_quadratic_element(*mesh, c, d)) continue;
-    const CellType t = mesh->cell_type(c);
-    const CellInfo& info = cell_info(t);
-    const std::int32_t* nodes = mesh->cell(c);
-    double longest = 0;
-    for (int e = 0; e < info.num_edges; ++e)
-      longest = std::max(longest, (point(*mesh, mesh->coords, nodes[info.edges[e][1]]) -
-                                   point(*mesh, mesh->coords, nodes[info.edges[e][0]]))
-                                      .norm());
-    for (int k = info.num_corners; k < info.num_nodes; ++k) {
-      const int v = nodes[k];
-      shape_values(info.linear, reference_node(t, k), N);
-      Vec3 x(0, 0, 0);
-      for (int i = 0; i < info.num_corners; ++i) x += N[i] * point(*mesh, mesh->coords, nodes[i]);
-      set_point(&straight, v, x);
-      const bool on_boundary =
-          boundary[v] || (geometry && geometry->constraints &&
-                          geometry->constraints->kind(v) != VertexKind::kInterior);
-      if (on_boundary || !fixed[v]) continue;
-      if ((point(*mesh, mesh->coords, v) - x).norm() > 1e-9 * longest) {
-        fixed[v] = 0;
-        ++free_nodes;
-      }
-    }
-  }
-  if (free_nodes == 0) return;
-  StageSpec st;
-  st.rule = options.rule;
-  st.extra_points = options.extra_points;
-  st.solver = options.solver;
-  st.power = options.power > 0 ? options.power : 2.0;
-  // Two terms: the shape metric toward the ideal element (the pointwise mean ratio) and the
-  // size barrier toward the straight-sided cell (det J toward its constant: the det J ratio).
-  std::string error;
-  TermSpec shape;
-  shape.metric = recipe_metric(options.metric, d, 1.0, &error);
-  shape.target = options.target;
-  TermSpec size;
-  size.metric = recipe_metric("size_barrier", d, 1.0, &error);
-  size.target.type = TargetType::kReference;
-  size.target.reference = &straight;
-  if (!shape.metric || !size.metric || options.target.reference) return;
-  // The size term's weight: on the untangled gear tri6 (high_order_untangle_test) 1 / 0.3 / 0.1
-  // give det J ratio worst 0.08 -> 0.30 / 0.18 / 0.11 but pointwise mean ratio mean
-  // 0.890 -> 0.885 / 0.892 / 0.895: 0.3 is the largest measured that lets neither mean fall.
-  const double w = 0.3;
-  size.weights.assign(
-      canonical_sample_set(*mesh, options.rule).size() + options.extra_points.size(), w);
-  st.terms.push_back(shape);
-  st.terms.push_back(size);
-  const std::vector<double> start = mesh->coords;
-  std::vector<double> stepped;  // the first round's result stepped back, if it kept every guarantee
-  std::string stepped_note;
-  for (int round = 0; round <= options.guard_rounds; ++round) {
-    st.name = round == 0
-                  ? "shape (curved nodes)"
-                  : "shape (curved nodes, quadratic guard round " + std::to_string(round) + ")";
-    st.fixed = fixed;
-    StageResult sr;
-    if (!optimize_stage(mesh, st, &sr).ok()) {
-      mesh->coords = start;
-      return;
-    }
-    result->stages.push_back(sr);
-    if (st.solver.progress.cancelled()) {  // cancelled: the curved nodes where this pass began
-      mesh->coords = start;
-      return;
-    }
-    std::vector<char> violates;
-    std::string first;
-    const int violators = quadratic_violators(*mesh, input, options, &violates, &first);
-    StageResult& last = result->stages.back();
-    if (violators == 0) {
-      // Rounds that ended by holding every node give the start back: a stepped-back result
-      // of an earlier round instead.
-      if (mesh->coords == start && !stepped.empty()) {
-        mesh->coords = stepped;
-        last.termination += "; quadratic guard: " + stepped_note;
-      }
-      return;
-    }
-    if (stepped.empty()) {
-      // This round's result with the violators' curved nodes stepped back towards where the
-      // stage began (quadratic_guard.h, no solve), kept for when the rounds give nothing.
-      const std::vector<double> solved = mesh->coords;
-      std::vector<char> unknown(fixed.size());
-      for (std::size_t v = 0; v < fixed.size(); ++v) unknown[v] = !fixed[v];
-      auto apply = [&](const std::vector<double>& t) {
-        for (int v = 0; v < mesh->num_vertices(); ++v)
-          for (int a = 0; a < mesh->space_dim; ++a) {
-            const std::size_t k = std::size_t(v) * mesh->space_dim + a;
-            mesh->coords[k] = start[k] + t[v] * (solved[k] - start[k]);
-          }
-      };
-      std::vector<char> bad = violates, held;
-      std::string why;
-      int passes = 0;
-      if (step_back_until_kept(mesh, input, options, unknown, apply, kMaxStepBackPasses, &bad,
-                               &passes, &why, &held) &&
-          mesh->coords != start) {
-        stepped = mesh->coords;
-        stepped_note = "round " + std::to_string(round) + "'s " + std::to_string(violators) +
-                       " cells (" + first + ") stepped back towards their start in " +
-                       std::to_string(passes) + " passes kept";
-      }
-      mesh->coords = solved;
-    }
-    int newly_fixed = 0;
-    for (int c = 0; c < mesh->num_cells(); ++c) {
-      if (!violates[c]) continue;
-      for (int i = 0; i < mesh->cell_size(c); ++i) {
-        char& f = fixed[mesh->cell(c)[i]];
-        newly_fixed += !f;
-        f = 1;
-      }
-    }
-    mesh->coords = start;
-    if (newly_fixed == 0 || round == options.guard_rounds) {
-      last.termination += "; quadratic guard: " + std::to_string(violators) +
-                          " cells would get worse (" + first + "): ";
-      if (!stepped.empty()) mesh->coords = stepped;
-      last.termination += stepped.empty() ? "curved nodes kept" : stepped_note;
-      return;
-    }
-    last.termination +=
-        "; quadratic guard: " + std::to_string(violators) + " cells held (" + first + ")";
-  }
 }
 
 }  // namespace
@@ -489,7 +344,7 @@ Status improve_quadratic_shape(Mesh* mesh, const ShapeOptions& options, RecipeRe
     last.termination +=
         "; quadratic guard: " + std::to_string(violators) + " cells held (" + first + ")";
   }
-  relax_curved_nodes(mesh, options, geometry, boundary, input, result);
+  curve_interior_nodes(mesh, options, geometry, boundary, input, result);
   result->after = measure_mesh(*mesh, options.rule);
   result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();

@@ -13,6 +13,7 @@
 #include "tmop/quality/element_scan.h"
 #include "tmop/quality/jacobian_certificate.h"
 #include "tmop/quality/quality_options.h"
+#include "tmop/recipes/quadratic_curving.h"
 
 namespace tmop {
 namespace {
@@ -203,6 +204,16 @@ Status untangle(Mesh* mesh, const UntangleOptions& options, RecipeResult* result
       shape.fixed = options.fixed;
       shape.extra_points = extra;
       shape.geometry = geometry;
+      // Quadratic cells: the curvature the untangler put where no cell needs it is taken back
+      // first (quadratic_curving.h), so the shape stage's baseline is the re-curved mesh.
+      if (sr.solves > 0) {
+        RecipeResult curving;
+        curve_untangled_nodes(mesh, shape, &curving);
+        for (StageResult& st : curving.stages) {
+          st.name += " after untangling";
+          result->stages.push_back(std::move(st));
+        }
+      }
       // The caller's baseline is of the input: it serves only if untangling moved nothing.
       if (mesh->coords != input_coords) shape.input_baseline = nullptr;
       RecipeResult shape_result;

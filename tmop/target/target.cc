@@ -150,6 +150,8 @@ Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec
       !reference_matches(mesh, ref))
     return Status::Failure("reference mesh: its vertices and cells do not match the mesh's");
   if (spec.type == TargetType::kComposed) return build_composed_targets(mesh, points, spec, W);
+  if (!spec.cell_scale.empty() && static_cast<int>(spec.cell_scale.size()) != mesh.num_cells())
+    return Status::Failure("targets: cell_scale needs one factor per cell");
   if (!(spec.frame.length > 0) || !std::isfinite(spec.frame.length))
     return Status::Failure("target frame: the length scale must be positive");
 
@@ -202,6 +204,8 @@ Status build_targets(const Mesh& mesh, const SampleSet& points, const TargetSpec
     double w[9];
     if (spec.type == TargetType::kReference) {
       target_jacobian(ref, c, xi, w);
+      if (!spec.cell_scale.empty())
+        for (int i = 0; i < d * d; ++i) w[i] *= spec.cell_scale[c];
       const double dw = det(w, d);
       if (!(std::abs(dw) > 0) || !std::isfinite(dw))
         return Status::Failure("cell " + std::to_string(c) +

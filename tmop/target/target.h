@@ -46,6 +46,10 @@ struct TargetSpec {
   // kReference: a mesh with the same vertices/cells numbering whose Jacobians are the targets
   // ("keep what is there" when it is the initial mesh). nullptr means the mesh itself. Not owned.
   const Mesh* reference = nullptr;
+  // kReference: when not empty, one factor per cell (> 0) multiplying W of the cell's points
+  // (a reference cell scaled to another size: the curved-node stage of quadratic meshes takes
+  // the straight-sided cell scaled to the curved cell's area, recipes/quadratic_curving.h).
+  std::vector<double> cell_scale;
   // kIdealSizeField: the name of a 1-component point_data array of target edge lengths (the
   // user's length units, see frame).
   std::string size_field;
