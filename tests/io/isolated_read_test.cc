@@ -295,6 +295,30 @@ TEST(IsolatedRead, TheLibhdf5FindingIsOneLine) {
   EXPECT_NE(e, "ok");
 }
 
+// libhdf5 loops forever on this damaged netCDF-4 file (found by fuzzing, 2026-12-05): the
+// child's CPU-time limit ends the read with one line; a child spinning in a hook likewise.
+void spin_hook(int) {
+  for (volatile unsigned long i = 0;; i = i + 1) {
+  }
+}
+
+TEST(IsolatedRead, AReadThatNeverEndsIsStoppedByItsCpuLimit) {
+  io::set_isolated_read_cpu_limit(1.0, 0.0);
+  const std::string f = std::string(TMOP_SOURCE_DIR) + "/tests/fuzz/regressions/exo/hdf5_hang.exo";
+  EXPECT_EQ(isolated_error(f, nullptr),
+            f + ": the HDF5 library did not finish reading this file in 1 s of CPU time (the "
+                "reading process was stopped); the file is damaged or not a valid netCDF-4 "
+                "(HDF5) Exodus II file");
+  const std::string cgns = std::string(TMOP_SOURCE_DIR) + "/tests/fuzz/corpus/cgns/sq_a.cgns";
+  EXPECT_EQ(isolated_error(cgns, spin_hook),
+            cgns +
+                ": the HDF5 library did not finish reading this file in 1 s of CPU time (the "
+                "reading process was stopped); the file is damaged or not a valid CGNS file");
+  io::set_isolated_read_cpu_limit(20.0, 1.0);
+  // The defaults leave a valid file alone.
+  EXPECT_EQ(isolated_error(cgns, nullptr), "ok");
+}
+
 #endif
 
 TEST(IsolatedRead, OffUnderMpi) {

@@ -6,6 +6,8 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,7 +15,9 @@
 #include <sys/prctl.h>
 #endif
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -33,6 +37,16 @@ namespace {
 
 std::atomic<bool> g_isolated{false};
 std::atomic<void (*)(int)> g_child_hook{nullptr};
+std::atomic<double> g_cpu_base{20.0};
+std::atomic<double> g_cpu_per_mb{1.0};
+
+// The child's CPU-time limit for reading PATH, in whole seconds (isolated_read.h).
+long cpu_limit_seconds(const std::string& path) {
+  struct stat st;
+  const double mb = ::stat(path.c_str(), &st) == 0 ? static_cast<double>(st.st_size) / 1e6 : 0.0;
+  const double limit = g_cpu_base.load() + g_cpu_per_mb.load() * mb;
+  return limit >= 1e9 ? 1000000000L : std::max(1L, static_cast<long>(std::ceil(limit)));
+}
 
 // OpenMPI (and others) do not support fork in an MPI process: isolation is off under mpirun
 // (its rank variables, as MpiSession checks) and once the program has initialised MPI.
@@ -68,6 +82,8 @@ const char* signal_name(int sig) {
       return "SIGQUIT";
     case SIGPIPE:
       return "SIGPIPE";
+    case SIGXCPU:
+      return "SIGXCPU";
     default:
       return "a signal";
   }
@@ -75,6 +91,12 @@ const char* signal_name(int sig) {
 
 std::string signal_message(const std::string& path, const char* kind, int sig) {
   const std::string name = signal_name(sig);
+  if (sig == SIGXCPU)
+    return path + ": the HDF5 library did not finish reading this file in " +
+           std::to_string(cpu_limit_seconds(path)) +
+           " s of CPU time (the reading process was stopped); the file is damaged or not a "
+           "valid " +
+           kind + " file";
   if (sig == SIGINT || sig == SIGTERM || sig == SIGHUP || sig == SIGQUIT)
     return path + ": reading was interrupted (" + name + ")";
   if (sig == SIGKILL)
@@ -102,7 +124,8 @@ void test_hook_from_environment() {
 }
 
 // The child: defaults for every signal, parse, send, _exit. Never returns.
-[[noreturn]] void child_main(int fd, pid_t parent, const std::string& path, io::MeshReader read) {
+[[noreturn]] void child_main(int fd, pid_t parent, const std::string& path, io::MeshReader read,
+                             long cpu_seconds) {
   for (int sig = 1; sig < NSIG; ++sig)
     if (sig != SIGKILL && sig != SIGSTOP) ::signal(sig, SIG_DFL);
   ::signal(SIGPIPE, SIG_IGN);  // a parent gone: the write fails and the child ends
@@ -122,6 +145,14 @@ void test_hook_from_environment() {
     ::dup2(null, 1);
     ::dup2(null, 2);
   }
+  // libhdf5 loops forever on some damaged files (tests/fuzz/regressions/exo/hdf5_hang.exo): a
+  // CPU-time limit ends such a read with SIGXCPU (SIGKILL a second later). No core file: a
+  // crash of the child must not leave one in the user's directory.
+  const struct rlimit cpu = {static_cast<rlim_t>(cpu_seconds),
+                             static_cast<rlim_t>(cpu_seconds + 1)};
+  ::setrlimit(RLIMIT_CPU, &cpu);
+  const struct rlimit core = {0, 0};
+  ::setrlimit(RLIMIT_CORE, &core);
   if (void (*hook)(int) = g_child_hook.load()) hook(fd);
   test_hook_from_environment();
   bool sent = false;
@@ -180,6 +211,11 @@ namespace io {
 
 void set_isolated_read_child_hook(void (*hook)(int fd)) { g_child_hook.store(hook); }
 
+void set_isolated_read_cpu_limit(double base_seconds, double seconds_per_megabyte) {
+  g_cpu_base.store(base_seconds);
+  g_cpu_per_mb.store(seconds_per_megabyte);
+}
+
 bool has_hdf5_signature(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return false;
@@ -195,6 +231,7 @@ void read_isolated(const std::string& path, MeshReader read, const char* kind, M
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0)
     throw Error(path + ": cannot start the reading process (" + std::strerror(errno) + ")");
+  const long cpu_seconds = cpu_limit_seconds(path);
   std::fflush(nullptr);  // nothing the caller buffered is written twice
   const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
@@ -206,7 +243,7 @@ void read_isolated(const std::string& path, MeshReader read, const char* kind, M
   }
   if (pid == 0) {
     ::close(fds[0]);
-    child_main(fds[1], parent, path, read);
+    child_main(fds[1], parent, path, read, cpu_seconds);
   }
   ::close(fds[1]);
   Child child(pid, fds[0]);

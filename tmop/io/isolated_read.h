@@ -16,6 +16,9 @@
 //   EINTR-safe; on an exception in the parent the child is killed and reaped: no zombie) and:
 //   - rethrows the child's tmop::Error (same message), std::bad_alloc, or any other
 //     std::exception as std::runtime_error(what) (what a direct read would have thrown);
+//   - child over its CPU-time limit (set_isolated_read_cpu_limit; libhdf5 loops forever on some
+//     damaged files): Error "PATH: the HDF5 library did not finish reading this file in N s of
+//     CPU time (the reading process was stopped); the file is damaged or not a valid KIND file";
 //   - child ended by SIGSEGV, SIGABRT, ... : Error "PATH: the HDF5 library crashed reading this
 //     file (SIGABRT, signal 6); the file is damaged or not a valid KIND file";
 //     by SIGINT, SIGTERM, SIGHUP, SIGQUIT: "PATH: reading was interrupted (SIGINT)";
@@ -26,6 +29,10 @@
 //   fork or pipe failing: Error "PATH: cannot start the reading process (REASON)".
 //   Cost: one fork of the caller (copy-on-write page tables) and one copy of the mesh through
 //   the pipe (docs/formats.md, "Process isolation", has the measurement).
+//   The child never writes a core file (RLIMIT_CORE 0).
+// set_isolated_read_cpu_limit(base, per_mb): the child's CPU-time limit is base + per_mb x the
+//   file's size in MB, rounded up to whole seconds (RLIMIT_CPU; default 20 s + 1 s/MB, far above
+//   what a valid file needs: docs/formats.md, "Process isolation"). The fuzz target sets 2 s.
 // has_hdf5_signature(path): the file starts with "\x89HDF\r\n\x1a\n" (netCDF-4, CGNS).
 // set_isolated_read_child_hook(hook): tests and the fuzz target only: hook(fd) runs in the child
 //   right after fork, before the read (fd is the pipe to the parent). nullptr: none. For the
@@ -48,6 +55,8 @@ void read_isolated(const std::string& path, MeshReader read, const char* kind, M
 bool has_hdf5_signature(const std::string& path);
 
 void set_isolated_read_child_hook(void (*hook)(int fd));
+
+void set_isolated_read_cpu_limit(double base_seconds, double seconds_per_megabyte);
 
 }  // namespace io
 }  // namespace tmop
