@@ -75,6 +75,9 @@ DEFINE_string(task, "shape", "read, quality, shape, untangle, evaluate, floor or
 DEFINE_int32(threads, 0, "Threads for Ceres (0 = all hardware threads). floor is one thread.");
 DEFINE_int32(part_size, -1,
              "Partitioned stages: elements per part; 0: one problem; -1: the default.");
+DEFINE_double(part_first_tolerance, -1,
+              "Partitioned stages: the first sweep's tolerance (0: function_tolerance; -1: the "
+              "default).");
 DEFINE_bool(isolated_hdf5_reads, true,
             "Read .cgns and netCDF-4 .exo files in a child process, as every tool does (false: in "
             "the process, to measure what the isolation costs: docs/formats.md).");
@@ -200,6 +203,7 @@ tmop::SolverOptions solver_options(const Context& ctx) {
   so.max_seconds = FLAGS_max_seconds;
   so.threads = ctx.threads;
   if (FLAGS_part_size >= 0) so.part_size = FLAGS_part_size;
+  if (FLAGS_part_first_tolerance >= 0) so.first_sweep_tolerance = FLAGS_part_first_tolerance;
   so.verbose = FLAGS_verbose;
   tmop::linear_solver_from_name(FLAGS_linear_solver, &so.linear_solver);
   tmop::solver_method_from_name(FLAGS_solver, &so.method);

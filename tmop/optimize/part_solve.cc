@@ -95,8 +95,8 @@ class PartCallback final : public ceres::IterationCallback {
 
 PartOutcome solve_part(const Mesh& mesh, const std::vector<double>& start, const StageContext& ctx,
                        const IdealTable& table, const VertexCells& vc, const CellPoints& cp,
-                       const std::vector<int>& free, double seconds, PartScratch* scratch,
-                       std::vector<double>* out) {
+                       const std::vector<int>& free, double seconds, double function_tolerance,
+                       PartScratch* scratch, std::vector<double>* out) {
   PartOutcome outcome;
   const int sd = mesh.space_dim;
   std::vector<int> vertices;  // local index -> vertex
@@ -158,6 +158,7 @@ PartOutcome solve_part(const Mesh& mesh, const std::vector<double>& start, const
     ceres::Solver::Options so = stage_solver_options(
         spec, ctx.d, static_cast<int>(free.size()) * ctx.d, 1, &outcome.linear_solver);
     so.max_solver_time_in_seconds = std::max(seconds, 1e-9);
+    so.function_tolerance = function_tolerance;
     PartCallback callback(ctx, x, free, free_local, outcome.elements);
     so.callbacks.push_back(&callback);
     // Cancelled while the problem was built: no Solve (its preprocessing cannot be interrupted);

@@ -49,11 +49,12 @@ struct PartScratch {
 };
 
 // `start`: the coordinates at the start of the phase (read only); `free`: the part's free
-// vertices, sorted; seconds: what is left of the stage's time.
+// vertices, sorted; seconds: what is left of the stage's time; function_tolerance: Ceres's, for
+// this part (the stage's, or the first sweep's, SolverOptions::first_sweep_tolerance).
 PartOutcome solve_part(const Mesh& mesh, const std::vector<double>& start, const StageContext& ctx,
                        const IdealTable& table, const VertexCells& vc, const CellPoints& cp,
-                       const std::vector<int>& free, double seconds, PartScratch* scratch,
-                       std::vector<double>* out);
+                       const std::vector<int>& free, double seconds, double function_tolerance,
+                       PartScratch* scratch, std::vector<double>* out);
 
 }  // namespace tmop
 

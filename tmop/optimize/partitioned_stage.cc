@@ -115,8 +115,8 @@ struct PhaseTotals {
 // moved_at (when given): the vertices the phase changed get `stamp`.
 Status run_phase(Mesh* mesh, const StageContext& ctx, const IdealTable& table,
                  const VertexCells& vc, const CellPoints& cp, const Pieces& pieces, int threads,
-                 double seconds, std::vector<PartScratch>* scratch, StageResult* result,
-                 PhaseTotals* totals, std::vector<int>* moved_at, int stamp) {
+                 double seconds, double function_tolerance, std::vector<PartScratch>* scratch,
+                 StageResult* result, PhaseTotals* totals, std::vector<int>* moved_at, int stamp) {
   const std::vector<double> start = mesh->coords;
   std::vector<PartOutcome> outcomes(pieces.size());
   std::vector<int> order(pieces.size());
@@ -143,8 +143,8 @@ Status run_phase(Mesh* mesh, const StageContext& ctx, const IdealTable& table,
     for (std::size_t k = next++; k < mine.size(); k = next++) {
       if (progress.cancelled()) break;
       const int i = mine[k];
-      outcomes[i] = solve_part(*mesh, start, ctx, table, vc, cp, pieces[i], seconds, &(*scratch)[w],
-                               &mesh->coords);
+      outcomes[i] = solve_part(*mesh, start, ctx, table, vc, cp, pieces[i], seconds,
+                               function_tolerance, &(*scratch)[w], &mesh->coords);
     }
   };
   const int workers = std::max(1, std::min<int>(threads, static_cast<int>(mine.size())));
@@ -229,9 +229,10 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
   popts.cell_weight = &weight;
   std::vector<int> part1, part2;
   ElementGraph graph;
-  Status s = element_graph(*mesh, &graph);
+  Status s = element_graph(*mesh, &graph, resolve_threads(so.threads));
   if (!s.ok()) return s;
   s = partition_elements(*mesh, graph, popts, &part1);
+
   if (!s.ok()) return s;
   std::vector<char> cut1(mesh->num_vertices(), 0);
   const Pieces phase_a = pieces_of(*mesh, vc, part1, num_parts, candidate, &cut1);
@@ -322,7 +323,12 @@ Status solve_partitioned(Mesh* mesh, const StageContext& ctx, const IdealTable& 
       }
       if (!pieces->empty()) {
         ++runs;
-        s = run_phase(mesh, ctx, table, vc, cp, *pieces, threads, so.max_seconds - elapsed,
+        // The first sweep's phase A may stop early (SolverOptions::first_sweep_tolerance): what
+        // is left near its cuts is B's and C's, and later sweeps revisit it.
+        const double ft = sweep == 1 && ph == 0 && so.first_sweep_tolerance > 0
+                              ? std::max(so.first_sweep_tolerance, so.function_tolerance)
+                              : so.function_tolerance;
+        s = run_phase(mesh, ctx, table, vc, cp, *pieces, threads, so.max_seconds - elapsed, ft,
                       &scratch, result, &totals, so.sweep_rings > 0 ? &moved_at : nullptr, runs);
         if (!s.ok()) return s;
       }

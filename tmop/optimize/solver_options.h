@@ -175,6 +175,11 @@ struct SolverOptions {
   int partitions = 0;
   int max_sweeps = 4;
   double sweep_tolerance = 5e-3;
+  // The first sweep's phase A solves its parts to this relative decrease per step (Ceres's
+  // function_tolerance) instead of function_tolerance: the bands around its cuts are re-solved by
+  // phases B and C and revisited by later sweeps, so its last, costliest steps (10 CG steps
+  // each) bought little (docs/partitioning.md: part_1m). 0: function_tolerance.
+  double first_sweep_tolerance = 3e-4;
   // Sweeps after the first re-solve, in each phase, only the free vertices within sweep_rings
   // rings of elements of a vertex that moved since that phase last ran, in the parts where
   // that at least halves the part (an approximation: docs/partitioning.md has its cost).

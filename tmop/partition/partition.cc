@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <thread>
 
 #include "tmop/element/cell_type.h"
 
@@ -26,16 +27,6 @@ VertexCells vertex_cells(const Mesh& mesh) {
 }
 
 namespace {
-
-// Frees METIS's arrays on every path.
-struct MetisArrays {
-  idx_t* xadj = nullptr;
-  idx_t* adjncy = nullptr;
-  ~MetisArrays() {
-    if (xadj) METIS_Free(xadj);
-    if (adjncy) METIS_Free(adjncy);
-  }
-};
 
 std::string metis_error(int code) {
   switch (code) {
@@ -65,33 +56,94 @@ bool share_avoided(const Mesh& mesh, int a, int b, const std::vector<char>& avoi
 
 static_assert(sizeof(idx_t) == sizeof(std::int32_t), "METIS built with 32-bit indices expected");
 
-Status element_graph(const Mesh& mesh, ElementGraph* graph) {
+// Elements e and f are adjacent when they share at least d corners (METIS_MeshToDual's
+// "ncommon" = d, computed here through corner -> element lists: 1M tets 1.3 s -> 0.2 s,
+// docs/partitioning.md). Through corners only: a quadratic facet shares its mid-edge nodes
+// too, but d corners decide adjacency alike for every cell type. Neighbours ascend.
+Status element_graph(const Mesh& mesh, ElementGraph* graph, int threads) {
   const int d = mesh.dim();
   *graph = ElementGraph();
   for (int c = 0; c < mesh.num_cells(); ++c)
     if (mesh.is_element(c, d)) graph->element_cell.push_back(c);
-  idx_t ne = static_cast<idx_t>(graph->element_cell.size());
-  graph->xadj.assign(1, 0);
-  if (ne < 2) {
-    graph->xadj.assign(static_cast<std::size_t>(ne) + 1, 0);
-    return Status::Ok();
+  const std::size_t ne = graph->element_cell.size();
+  graph->xadj.assign(ne + 1, 0);
+  if (ne < 2) return Status::Ok();
+  const auto corners = [&](std::size_t e) {
+    return cell_info(mesh.cell_type(graph->element_cell[e])).num_corners;
+  };
+  const int nv = mesh.num_vertices();
+  std::vector<std::int64_t> vptr(static_cast<std::size_t>(nv) + 1, 0);
+  for (std::size_t e = 0; e < ne; ++e) {
+    const int* n = mesh.cell(graph->element_cell[e]);
+    for (int i = 0; i < corners(e); ++i) ++vptr[n[i] + 1];
   }
-  // Through corners only: a quadratic facet shares its mid-edge nodes too, but d corners
-  // decide adjacency alike for every cell type.
-  std::vector<idx_t> eptr(graph->element_cell.size() + 1, 0), eind;
-  for (std::size_t e = 0; e < graph->element_cell.size(); ++e) {
-    const int c = graph->element_cell[e];
-    const int k = cell_info(mesh.cell_type(c)).num_corners;
-    eind.insert(eind.end(), mesh.cell(c), mesh.cell(c) + k);
-    eptr[e + 1] = static_cast<idx_t>(eind.size());
+  for (int v = 0; v < nv; ++v) vptr[v + 1] += vptr[v];
+  std::vector<std::int32_t> velem(static_cast<std::size_t>(vptr[nv]));
+  {
+    std::vector<std::int64_t> next(vptr.begin(), vptr.end() - 1);
+    for (std::size_t e = 0; e < ne; ++e) {
+      const int* n = mesh.cell(graph->element_cell[e]);
+      for (int i = 0; i < corners(e); ++i) velem[next[n[i]]++] = static_cast<std::int32_t>(e);
+    }
   }
-  idx_t nn = mesh.num_vertices(), ncommon = d, numflag = 0;
-  MetisArrays dual;
-  const int rc = METIS_MeshToDual(&ne, &nn, eptr.data(), eind.data(), &ncommon, &numflag,
-                                  &dual.xadj, &dual.adjncy);
-  if (rc != METIS_OK) return Status::Failure("partition: METIS_MeshToDual: " + metis_error(rc));
-  graph->xadj.assign(dual.xadj, dual.xadj + ne + 1);
-  graph->adjncy.assign(dual.adjncy, dual.adjncy + dual.xadj[ne]);
+  // Neighbours of the elements [begin, end) into adj (concatenated) and deg (one count each).
+  // A worker's own (mark, shared) slots per element: one cache line per touched candidate.
+  const int ncommon = std::max(1, d);
+  struct Slot {
+    std::int32_t mark = -1, shared = 0;
+  };
+  const auto neighbours_of = [&](std::size_t begin, std::size_t end, std::vector<std::int32_t>* adj,
+                                 std::vector<std::int32_t>* deg) {
+    std::vector<Slot> slot(ne);
+    std::vector<std::int32_t> touched, found;
+    for (std::size_t e = begin; e < end; ++e) {
+      const std::int32_t self = static_cast<std::int32_t>(e);
+      touched.clear();
+      const int* n = mesh.cell(graph->element_cell[e]);
+      for (int i = 0; i < corners(e); ++i)
+        for (std::int64_t k = vptr[n[i]]; k < vptr[n[i] + 1]; ++k) {
+          const std::int32_t f = velem[static_cast<std::size_t>(k)];
+          if (f == self) continue;
+          Slot& t = slot[static_cast<std::size_t>(f)];
+          if (t.mark != self) {
+            t.mark = self;
+            t.shared = 1;
+            touched.push_back(f);
+          } else {
+            ++t.shared;
+          }
+        }
+      found.clear();
+      for (const std::int32_t f : touched)
+        if (slot[static_cast<std::size_t>(f)].shared >= ncommon) found.push_back(f);
+      std::sort(found.begin(), found.end());
+      adj->insert(adj->end(), found.begin(), found.end());
+      deg->push_back(static_cast<std::int32_t>(found.size()));
+    }
+  };
+  // Contiguous ranges, concatenated in order: the graph does not depend on the threads.
+  const int workers = static_cast<int>(
+      std::max<std::size_t>(1, std::min<std::size_t>(std::max(1, threads), ne / 4096 + 1)));
+  std::vector<std::vector<std::int32_t>> adj(workers), deg(workers);
+  std::vector<std::thread> pool;
+  for (int w = 1; w < workers; ++w)
+    pool.emplace_back(neighbours_of, ne * w / workers, ne * (w + 1) / workers, &adj[w], &deg[w]);
+  neighbours_of(0, ne / workers, &adj[0], &deg[0]);
+  for (std::thread& t : pool) t.join();
+  std::size_t edges = 0;
+  for (const auto& a : adj) edges += a.size();
+  if (edges > 0x7fffffffu)
+    return Status::Failure("partition: the element graph has more than 2^31 edges");
+  graph->adjncy.reserve(edges);
+  std::size_t e = 0;
+  for (int w = 0; w < workers; ++w) {
+    graph->adjncy.insert(graph->adjncy.end(), adj[w].begin(), adj[w].end());
+    std::vector<std::int32_t>().swap(adj[w]);
+    for (const std::int32_t k : deg[w]) {
+      graph->xadj[e + 1] = graph->xadj[e] + k;
+      ++e;
+    }
+  }
   return Status::Ok();
 }
 

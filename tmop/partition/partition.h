@@ -37,12 +37,14 @@ struct PartitionOptions {
 };
 
 // The element dual graph: elements (cells of the top dimension, in cell order) adjacent when
-// they share d corners (a facet), in METIS's CSR form. Built once, partitioned several times.
+// they share d corners (a facet), in METIS's CSR form, each element's neighbours ascending.
+// Built once, partitioned several times. `threads` workers take contiguous ranges of at least
+// 4096 elements; the graph does not depend on their number.
 struct ElementGraph {
   std::vector<int> element_cell;  // graph vertex -> cell
   std::vector<std::int32_t> xadj, adjncy;
 };
-Status element_graph(const Mesh& mesh, ElementGraph* graph);
+Status element_graph(const Mesh& mesh, ElementGraph* graph, int threads = 1);
 
 // part[c] in [0, num_parts) for every element c, -1 for the other cells (boundary facets).
 // Fails (a one-line Status) when METIS does.

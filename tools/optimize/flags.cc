@@ -96,6 +96,11 @@ DEFINE_string(partitions, "auto",
               "Partitioned shape stages: auto (parts of --part_size elements from 2 parts' worth "
               "up), 1 (one problem) or K (K parts, at least 64 elements each).");
 DEFINE_int32(part_sweeps, 4, "Partitioned stages: at most this many sweeps over the parts.");
+DEFINE_double(
+    part_first_tolerance, -1,
+    "Partitioned stages: the first sweep's parts stop when a step lowers the objective by "
+    "less than this fraction (0: as --function_tolerance; -1: the library's default, "
+    "3e-4, docs/partitioning.md).");
 DEFINE_int32(part_rings, 2,
              "Partitioned stages: sweeps after the first re-solve only the vertices within this "
              "many element rings of what moved since; 0: whole parts again.");
@@ -194,6 +199,9 @@ int check_flags(int argc, char** argv) {
   if (!(FLAGS_layer_edge_ratio >= 0)) return fail(2, "--layer_edge_ratio must be >= 0");
   if (FLAGS_threads < 0) return fail(2, "--threads must be >= 0 (0: all cores)");
   if (FLAGS_part_size < -1) return fail(2, "--part_size must be >= 0 (0: one problem)");
+  if (!(FLAGS_part_first_tolerance == -1 ||
+        (FLAGS_part_first_tolerance >= 0 && FLAGS_part_first_tolerance < 1)))
+    return fail(2, "--part_first_tolerance must be in [0, 1) (0: as --function_tolerance)");
   if (FLAGS_part_sweeps < 1) return fail(2, "--part_sweeps must be >= 1");
   if (FLAGS_partitions != "auto") {
     if (partitions_from_flag() < 1)
@@ -298,6 +306,7 @@ int options_from_flags(RecipeOptions* o, bool* composed) {
   if (FLAGS_part_size >= 0) s.part_size = FLAGS_part_size;
   if (FLAGS_partitions != "auto") s.partitions = partitions_from_flag();
   s.max_sweeps = FLAGS_part_sweeps;
+  if (FLAGS_part_first_tolerance >= 0) s.first_sweep_tolerance = FLAGS_part_first_tolerance;
   s.sweep_rings = FLAGS_part_rings;
   s.verbose = FLAGS_verbose;
   if (FLAGS_recipe == "size_adapt") o->size_field = FLAGS_size_field;

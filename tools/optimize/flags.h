@@ -38,6 +38,7 @@ DECLARE_int32(threads);
 DECLARE_int32(part_size);
 DECLARE_string(partitions);
 DECLARE_int32(part_sweeps);
+DECLARE_double(part_first_tolerance);
 DECLARE_int32(part_rings);
 DECLARE_string(report);
 DECLARE_bool(binary);
