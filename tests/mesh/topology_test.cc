@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <map>
 #include <set>
+#include <thread>
 
 #include "tests/mesh/test_meshes.h"
 
@@ -220,6 +222,49 @@ TEST(Topology, KuhnGridCountsMatchFormulas) {
   for (const BoundaryFacet& f : facets) ExpectOutward(m, f);
   const auto mask = boundary_vertex_mask(m);
   EXPECT_EQ(std::count(mask.begin(), mask.end(), 0), (nx - 1) * (ny - 1) * (nz - 1));
+}
+
+// boundary_vertex_mask keeps its last answer for the same topology (boundary_vertex_mask in
+// topology.cc): every change of cells, nodes, regions or entities gives a fresh mask, and
+// masks of different meshes asked for in turn, from several threads, are each right.
+TEST(Topology, BoundaryMaskFollowsEveryChangeOfTopology) {
+  Mesh m = QuadGrid2x2();
+  const std::vector<char> plain = boundary_vertex_mask(m);
+  EXPECT_EQ(plain[4], 0);
+  EXPECT_EQ(boundary_vertex_mask(m), plain);
+  m.coords[3 * 4] += 0.1;  // coordinates do not matter
+  EXPECT_EQ(boundary_vertex_mask(m), plain);
+  m.cell_region.assign(m.num_cells(), 0);
+  m.cell_region[0] = 7;  // a region interface through vertex 4
+  EXPECT_EQ(boundary_vertex_mask(m)[4], 1);
+  m.cell_region[0] = 0;
+  EXPECT_EQ(boundary_vertex_mask(m)[4], 0);
+  m.cell_entity.assign(m.num_cells(), 1);
+  m.cell_entity[3] = 2;
+  EXPECT_EQ(boundary_vertex_mask(m)[4], 1);
+  m.cell_entity.clear();
+  EXPECT_EQ(boundary_vertex_mask(m)[4], 0);
+  // One cell fewer: vertex 4 is on the boundary.
+  Mesh three = QuadGrid2x2();
+  three.cell_types.pop_back();
+  three.cell_offsets.pop_back();
+  three.cell_nodes.resize(static_cast<std::size_t>(three.cell_offsets.back()));
+  EXPECT_EQ(boundary_vertex_mask(three)[4], 1);
+  const Mesh tets = TwoTets();
+  std::vector<std::thread> pool;
+  std::atomic<int> wrong{0};
+  for (int t = 0; t < 3; ++t)
+    pool.emplace_back([&, t] {
+      for (int i = 0; i < 200; ++i) {
+        if ((i + t) % 2) {
+          if (boundary_vertex_mask(tets) != std::vector<char>(5, 1)) ++wrong;
+        } else if (boundary_vertex_mask(three)[4] != 1 || boundary_vertex_mask(three)[0] != 1) {
+          ++wrong;
+        }
+      }
+    });
+  for (std::thread& th : pool) th.join();
+  EXPECT_EQ(wrong.load(), 0);
 }
 
 // About 1M tets: the topology functions must stay far below a second each (they are O(N) with

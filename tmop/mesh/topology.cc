@@ -1,6 +1,9 @@
 #include "tmop/mesh/topology.h"
 
 #include <algorithm>
+#include <array>
+#include <cstring>
+#include <mutex>
 #include <utility>
 
 namespace tmop {
@@ -217,7 +220,67 @@ std::vector<InteriorFacet> region_interface_facets(const Mesh& mesh) {
   return out;
 }
 
+namespace {
+
+// Two independent 64-bit hashes of everything boundary_vertex_mask depends on (the cells' types,
+// offsets, nodes, regions and entities, and the vertex count; not the coordinates). 1M tets:
+// ~10 ms, against ~250 ms for the facet matching.
+std::array<std::uint64_t, 2> topology_key(const Mesh& mesh) {
+  std::array<std::uint64_t, 2> h = {0x9e3779b97f4a7c15ull ^ std::uint64_t(mesh.num_vertices()),
+                                    0xc2b2ae3d27d4eb4full + std::uint64_t(mesh.num_cells())};
+  const auto mix = [&h](const void* data, std::size_t bytes) {
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    std::uint64_t w;
+    std::size_t i = 0;
+    for (; i + 8 <= bytes; i += 8) {
+      std::memcpy(&w, p + i, 8);
+      h[0] = (h[0] ^ w) * 0x100000001b3ull;
+      h[0] ^= h[0] >> 29;
+      h[1] = (h[1] + w) * 0x9fb21c651e98df25ull;
+      h[1] ^= h[1] >> 32;
+    }
+    w = bytes;
+    if (i < bytes) std::memcpy(&w, p + i, bytes - i), w ^= std::uint64_t(bytes) << 56;
+    h[0] = (h[0] ^ w) * 0x100000001b3ull;
+    h[1] = (h[1] + w) * 0x9fb21c651e98df25ull;
+  };
+  mix(mesh.cell_types.data(), mesh.cell_types.size() * sizeof(CellType));
+  mix(mesh.cell_offsets.data(), mesh.cell_offsets.size() * sizeof(std::int64_t));
+  mix(mesh.cell_nodes.data(), mesh.cell_nodes.size() * sizeof(std::int32_t));
+  mix(mesh.cell_region.data(), mesh.cell_region.size() * sizeof(std::int32_t));
+  mix(mesh.cell_entity.data(), mesh.cell_entity.size() * sizeof(std::int32_t));
+  return h;
+}
+
+std::vector<char> compute_boundary_vertex_mask(const Mesh& mesh);
+
+}  // namespace
+
+// The pipeline asks for the same mesh's mask many times (the tool's inputs and reports, the
+// recipe's fixed set, the guard, every stage: 7 facet matchings of part_1m, ~1.7 s): the last
+// mask is kept with its topology's key and returned while the topology is the same.
 std::vector<char> boundary_vertex_mask(const Mesh& mesh) {
+  static std::mutex lock;
+  static std::array<std::uint64_t, 2> last_key = {0, 0};
+  static std::vector<char> last_mask;
+  static bool have = false;
+  const std::array<std::uint64_t, 2> key = topology_key(mesh);
+  {
+    std::lock_guard<std::mutex> hold(lock);
+    if (have && key == last_key && last_mask.size() == std::size_t(mesh.num_vertices()))
+      return last_mask;
+  }
+  std::vector<char> mask = compute_boundary_vertex_mask(mesh);
+  std::lock_guard<std::mutex> hold(lock);
+  last_key = key;
+  last_mask = mask;
+  have = true;
+  return mask;
+}
+
+namespace {
+
+std::vector<char> compute_boundary_vertex_mask(const Mesh& mesh) {
   static const FacetNodes facet_nodes;
   std::vector<char> mask(mesh.num_vertices(), 0);
   // Every node of facet `local` of `cell`: its corners, then its mid-edge / face nodes.
@@ -238,6 +301,8 @@ std::vector<char> boundary_vertex_mask(const Mesh& mesh) {
   }
   return mask;
 }
+
+}  // namespace
 
 Adjacency vertex_to_cells(const Mesh& mesh) {
   const int d = mesh.dim();
