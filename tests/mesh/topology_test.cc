@@ -250,7 +250,10 @@ TEST(Topology, BoundaryMaskFollowsEveryChangeOfTopology) {
   three.cell_offsets.pop_back();
   three.cell_nodes.resize(static_cast<std::size_t>(three.cell_offsets.back()));
   EXPECT_EQ(boundary_vertex_mask(three)[4], 1);
+  EXPECT_EQ(boundary_facets(three).size(), 8u);  // was 8 for four quads too: 2 + 6 edges
+  EXPECT_EQ(boundary_facets(QuadGrid2x2()).size(), 8u);
   const Mesh tets = TwoTets();
+  EXPECT_EQ(boundary_facets(tets).size(), 6u);
   std::vector<std::thread> pool;
   std::atomic<int> wrong{0};
   for (int t = 0; t < 3; ++t)

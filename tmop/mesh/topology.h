@@ -57,7 +57,8 @@ std::vector<InteriorFacet> region_interface_facets(const Mesh& mesh);
 // (both are boundaries of a region, and a fixed boundary keeps them), including the mid-edge
 // nodes and (hex27) face nodes of quadratic cells that lie on that facet; 0 otherwise.
 // The last mask is kept (thread-safe) with a 128-bit hash of the topology (cell types, offsets,
-// nodes, regions, entities, vertex count) and returned again while that is unchanged.
+// nodes, regions, entities, vertex count) and returned again while that is unchanged; so is the
+// last boundary_facets list.
 std::vector<char> boundary_vertex_mask(const Mesh& mesh);
 
 // Compressed rows: the cells of vertex v are items[offsets[v] .. offsets[v + 1]), ascending.
