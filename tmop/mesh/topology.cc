@@ -181,8 +181,7 @@ FacetMatching match_facets(const Mesh& mesh) {
 
 namespace {
 
-std::vector<BoundaryFacet> compute_boundary_facets(const Mesh& mesh) {
-  const FacetMatching m = match_facets(mesh);
+std::vector<BoundaryFacet> boundary_facets_of(const Mesh& mesh, const FacetMatching& m) {
   std::vector<BoundaryFacet> out;
   for (std::size_t inst = 0; inst < m.cell.size(); ++inst) {
     if (m.multiplicity[inst] != 1) continue;
@@ -256,26 +255,37 @@ std::array<std::uint64_t, 2> topology_key(const Mesh& mesh) {
   return h;
 }
 
-std::vector<char> compute_boundary_vertex_mask(const Mesh& mesh);
+std::vector<char> boundary_mask_of(const Mesh& mesh, const FacetMatching& m);
+
+// Both answers from one facet matching: a tool asks for both (orientation, quality caps).
+struct BoundaryAnswers {
+  std::vector<char> mask;
+  std::vector<BoundaryFacet> facets;
+};
+BoundaryAnswers boundary_answers(const Mesh& mesh) {
+  const FacetMatching m = match_facets(mesh);
+  return BoundaryAnswers{boundary_mask_of(mesh, m), boundary_facets_of(mesh, m)};
+}
 
 // The last answer of a function of the topology alone, kept with the topology's key (see
-// boundary_vertex_mask and boundary_facets in topology.h). Thread-safe; a copy is returned.
+// boundary_vertex_mask and boundary_facets in topology.h). Thread-safe; get returns a copy of
+// the part of it that pick(answer) selects.
 template <class T>
 class TopologyMemo {
  public:
-  template <class Compute>
-  T get(const Mesh& mesh, const Compute& compute) {
+  template <class Compute, class Pick>
+  auto get(const Mesh& mesh, const Compute& compute, const Pick& pick) {
     const std::array<std::uint64_t, 2> key = topology_key(mesh);
     {
       std::lock_guard<std::mutex> hold(lock_);
-      if (have_ && key == key_) return value_;
+      if (have_ && key == key_) return pick(value_);
     }
     T value = compute(mesh);
     std::lock_guard<std::mutex> hold(lock_);
     key_ = key;
-    value_ = value;
+    value_ = std::move(value);
     have_ = true;
-    return value;
+    return pick(value_);
   }
 
  private:
@@ -289,20 +299,28 @@ class TopologyMemo {
 
 // The pipeline asks for the same mesh's mask and boundary facets many times (the tool's inputs
 // and quality reports, the recipe's fixed set, the guard, every stage: part_1m's default run
-// matched its 1M tets' facets 7 times, ~0.25 s each): both are kept for an unchanged topology.
+// matched its 1M tets' facets 7 times, ~0.25 s each): both come from one matching and are kept
+// for an unchanged topology.
+namespace {
+TopologyMemo<BoundaryAnswers>& boundary_memo() {
+  static TopologyMemo<BoundaryAnswers> memo;
+  return memo;
+}
+}  // namespace
+
 std::vector<char> boundary_vertex_mask(const Mesh& mesh) {
-  static TopologyMemo<std::vector<char>> memo;
-  return memo.get(mesh, compute_boundary_vertex_mask);
+  return boundary_memo().get(mesh, boundary_answers,
+                             [](const BoundaryAnswers& a) { return a.mask; });
 }
 
 std::vector<BoundaryFacet> boundary_facets(const Mesh& mesh) {
-  static TopologyMemo<std::vector<BoundaryFacet>> memo;
-  return memo.get(mesh, compute_boundary_facets);
+  return boundary_memo().get(mesh, boundary_answers,
+                             [](const BoundaryAnswers& a) { return a.facets; });
 }
 
 namespace {
 
-std::vector<char> compute_boundary_vertex_mask(const Mesh& mesh) {
+std::vector<char> boundary_mask_of(const Mesh& mesh, const FacetMatching& m) {
   static const FacetNodes facet_nodes;
   std::vector<char> mask(mesh.num_vertices(), 0);
   // Every node of facet `local` of `cell`: its corners, then its mid-edge / face nodes.
@@ -314,8 +332,7 @@ std::vector<char> compute_boundary_vertex_mask(const Mesh& mesh) {
     for (int k = 0; k < facet_nodes.count[t][local]; ++k)
       mask[nodes[facet_nodes.nodes[t][local][k]]] = 1;
   };
-  // One facet matching for both: facets of one element, and region interfaces.
-  const FacetMatching m = match_facets(mesh);
+  // Facets of one element, and region interfaces.
   for (std::size_t inst = 0; inst < m.cell.size(); ++inst) {
     if (m.multiplicity[inst] == 1 ||
         (m.multiplicity[inst] == 2 && !same_region(mesh, m.cell[inst], m.cell[m.partner[inst]])))
